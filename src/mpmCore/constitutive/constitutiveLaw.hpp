@@ -1,0 +1,102 @@
+// Interface of a constitutive law in the core (plain C++17, no OpenFOAM).
+//
+// The step computes, for each material point, the velocity gradient L over
+// the step and the updated deformation gradient F_new = (I + dt L) F_old,
+// then calls updateStress() once per point. A virtual call per point costs a
+// few ns, negligible against the 8..64-node stencil loops, and keeps each law
+// a small self-contained class.
+#pragma once
+#include "../types.hpp"
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+// Everything a law may read or change at one material point.
+struct PointKinematics
+{
+    const Real* L;        // velocity gradient, row-major, L_ij = dv_i/dx_j
+    const Real* Fold;     // deformation gradient at the start of the step
+    const Real* Fnew;     // deformation gradient at the end of the step
+    Real dt;
+};
+
+struct PointStress
+{
+    Real* sigma;          // Cauchy stress (xx yy zz xy yz xz), updated in place
+    Real* eqPlasticStrain;// accumulated equivalent plastic strain (history)
+};
+
+// Coefficients of a law, by name. The OpenFOAM layer fills this from the
+// material's dictionary using the law's parameter list (so reading, defaults
+// and range checks live in one place for all laws).
+struct Parameter
+{
+    std::string name;
+    std::string description;  // with units, for the log and the error text
+    bool required;
+    Real defaultValue;
+    Real minValue;            // lower bound (inclusive unless minExclusive)
+    Real maxValue;            // upper bound (inclusive unless maxExclusive)
+    // Appended with defaults so existing brace-initialisations stay valid;
+    // needed for ranges such as E > 0 or nu < 0.5.
+    bool minExclusive = false;
+    bool maxExclusive = false;
+};
+
+// True when v lies in the parameter's range (false for NaN).
+bool inRange(const Parameter& p, Real v);
+
+// The range in interval notation, e.g. "(0, inf)" or "[0, 0.5)".
+std::string rangeText(const Parameter& p);
+
+using Coefficients = std::map<std::string, Real>;
+
+class ConstitutiveLaw
+{
+public:
+    virtual ~ConstitutiveLaw() = default;
+
+    virtual const char* typeName() const = 0;
+
+    // Stress update for one point over one step.
+    virtual void updateStress(const PointKinematics& k, PointStress& s) const = 0;
+
+    // Largest signal speed (e.g. dilatational wave speed) at reference
+    // density rho0 and volume ratio J, for the CFL time step.
+    virtual Real waveSpeed(Real J) const = 0;
+
+    // Extra stability bound on dt for cell size h (e.g. viscous diffusion);
+    // +infinity when the law has none.
+    virtual Real maxStableDt(Real h) const;
+
+    // Reference (initial) density.
+    Real rho0() const { return rho0_; }
+
+protected:
+    Real rho0_ = 1.0;
+};
+
+// Creation by name, with a parameter list per law. Lives in the core so that
+// tests and benchmarks can build laws without OpenFOAM; the OpenFOAM layer
+// wraps it in a run-time selection.
+struct LawInfo
+{
+    std::string name;
+    std::string summary;
+    std::vector<Parameter> parameters;
+    std::unique_ptr<ConstitutiveLaw> (*create)(const Coefficients&);
+};
+
+const std::vector<LawInfo>& availableLaws();
+const LawInfo* findLaw(const std::string& name);
+
+// Throws std::invalid_argument naming the law and parameter if a required
+// parameter is missing, a value is out of range or a name is not one of the
+// law's parameters (catches typos); for an unknown law the message lists the
+// valid law names. Optional parameters absent from c take their default.
+std::unique_ptr<ConstitutiveLaw> makeLaw(const std::string& name, const Coefficients& c);
+
+} // namespace mpm

@@ -1,0 +1,121 @@
+#include "boundary.hpp"
+#include <stdexcept>
+
+namespace mpm {
+
+const char* wallTypeName(WallType t)
+{
+    switch (t)
+    {
+        case WallType::noSlip: return "noSlip";
+        case WallType::slip: return "slip";
+        case WallType::friction: return "friction";
+        default: return "periodic";
+    }
+}
+
+bool parseWallType(const std::string& name, WallType& t)
+{
+    for (auto c : {WallType::noSlip, WallType::slip, WallType::friction, WallType::periodic})
+    {
+        if (name == wallTypeName(c)) { t = c; return true; }
+    }
+    return false;
+}
+
+const char* validWallTypeNames() { return "noSlip slip friction periodic"; }
+
+int BoundarySpec::conditionAt(const Lattice& L, int side, int i, int j, int k) const
+{
+    const auto& fc = faceCondition[side];
+    if (fc.empty()) return 0;
+    const int axis = side/2;
+    const int r[3] = {i, j, k};
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    const int lo = a1 < a2 ? a1 : a2, hi = a1 < a2 ? a2 : a1;
+    return fc[std::size_t(r[lo]) + std::size_t(L.nCells[lo])*std::size_t(r[hi])];
+}
+
+void Boundary::build(const Lattice& L, const BoundarySpec& spec)
+{
+    ghosts_.clear();
+    friction_.clear();
+
+    // Periodicity is a property of an axis: both sides must agree.
+    for (int a = 0; a < 3; ++a)
+    {
+        periodic_[a] = false;
+        if (!L.solved[a]) continue;
+        const bool lo = spec.conditions.at(spec.conditionAt(L, 2*a, 0, 0, 0)).type == WallType::periodic;
+        const bool hi = spec.conditions.at(spec.conditionAt(L, 2*a + 1, 0, 0, 0)).type == WallType::periodic;
+        if (lo != hi)
+        {
+            throw std::invalid_argument
+            (
+                "boundary: direction " + std::to_string(a)
+              + " is periodic on one side only"
+            );
+        }
+        periodic_[a] = lo;
+    }
+
+    for (int k = 0; k < L.nodes[2]; ++k)
+    for (int j = 0; j < L.nodes[1]; ++j)
+    for (int i = 0; i < L.nodes[0]; ++i)
+    {
+        // Real indices; reflect each out-of-range solved coordinate in turn.
+        int r[3] = {i - L.padOf(0), j - L.padOf(1), k - L.padOf(2)};
+        bool isGhost = false;
+        std::array<Real, 3> sign{1, 1, 1};
+        for (int a = 0; a < 3; ++a)
+        {
+            const int n = L.nCells[a];
+            if (!L.solved[a] || (r[a] >= 0 && r[a] < n)) continue;
+            isGhost = true;
+            const bool low = r[a] < 0;
+            // The face this ghost lies across: other coordinates clamped.
+            int c[3] = {r[0], r[1], r[2]};
+            for (int b = 0; b < 3; ++b)
+            {
+                c[b] = c[b] < 0 ? 0 : (c[b] >= L.nCells[b] ? L.nCells[b] - 1 : c[b]);
+            }
+            const auto& wc = spec.conditions.at(spec.conditionAt(L, 2*a + (low ? 0 : 1), c[0], c[1], c[2]));
+            if (wc.type == WallType::periodic)
+            {
+                r[a] = ((r[a] % n) + n) % n;
+            }
+            else
+            {
+                r[a] = low ? -1 - r[a] : 2*n - 1 - r[a];
+                if (wc.type == WallType::noSlip) { for (auto& s : sign) s = -s; }
+                else { sign[a] = -sign[a]; }
+            }
+        }
+        if (isGhost)
+        {
+            ghosts_.push_back({L.node(i, j, k), L.realNode(r[0], r[1], r[2]), sign});
+        }
+    }
+
+    // Friction contact acts on the first node layer next to friction faces.
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!L.solved[a]) continue;
+        for (int lowHigh = 0; lowHigh < 2; ++lowHigh)
+        {
+            const int side = 2*a + lowHigh;
+            for (int k = 0; k < L.nCells[2]; ++k)
+            for (int j = 0; j < L.nCells[1]; ++j)
+            for (int i = 0; i < L.nCells[0]; ++i)
+            {
+                const int r[3] = {i, j, k};
+                if (r[a] != (lowHigh ? L.nCells[a] - 1 : 0)) continue;
+                const auto& wc = spec.conditions.at(spec.conditionAt(L, side, i, j, k));
+                if (wc.type != WallType::friction) continue;
+                friction_.push_back({L.realNode(i, j, k), a, lowHigh ? 1.0 : -1.0, wc.frictionCoefficient});
+            }
+        }
+    }
+}
+
+} // namespace mpm

@@ -1,0 +1,68 @@
+// Wall and periodic conditions on the lattice, by mirrored ghost nodes.
+//
+// Nodes sit at cell centres, so a wall lies half a spacing outside the first
+// node layer. Each ghost node is the mirror image of a real node across the
+// wall (or its periodic partner). The step
+//   1. scatters to real and ghost nodes alike,
+//   2. folds every ghost back onto its image: mass and volume add, momentum
+//      and force add with the reflection sign (the contribution of a mirror
+//      particle), then
+//   3. after the nodal update, fills the ghosts from their images again.
+// The result is the velocity field's odd (no-slip) or normal-odd (slip)
+// extension, so the wall condition holds exactly on the wall plane for every
+// B-spline order without modifying the splines. Coulomb friction adds a
+// contact correction on the first node layer. See docs/gridDesign.md.
+#pragma once
+#include "lattice.hpp"
+#include <array>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+enum class WallType { noSlip = 0, slip = 1, friction = 2, periodic = 3 };
+
+const char* wallTypeName(WallType t);
+bool parseWallType(const std::string& name, WallType& t);
+const char* validWallTypeNames();
+
+struct WallCondition
+{
+    WallType type = WallType::noSlip;
+    Real frictionCoefficient = 0;   // Coulomb mu, for WallType::friction
+};
+
+// Which condition each boundary face has. Sides are x-, x+, y-, y+, z-, z+.
+// Faces of a side are indexed by the real cell indices of the two other
+// axes (lower axis fastest). An empty vector means every face of that side
+// uses condition 0 of `conditions`.
+struct BoundarySpec
+{
+    std::vector<WallCondition> conditions{WallCondition{}};
+    std::array<std::vector<int>, 6> faceCondition;
+
+    int conditionAt(const Lattice& L, int side, int i, int j, int k) const;
+};
+
+// Precomputed ghost-to-image map and first-layer friction nodes.
+class Boundary
+{
+public:
+    struct Ghost { Index ghost; Index image; std::array<Real, 3> sign; };
+    struct FrictionNode { Index node; int axis; Real outward; Real mu; };
+
+    void build(const Lattice& L, const BoundarySpec& spec);
+
+    const std::vector<Ghost>& ghosts() const { return ghosts_; }
+    const std::vector<FrictionNode>& frictionNodes() const { return friction_; }
+
+    // Whether the side is periodic (for wrapping positions).
+    bool periodic(int axis) const { return periodic_[axis]; }
+
+private:
+    std::vector<Ghost> ghosts_;
+    std::vector<FrictionNode> friction_;
+    std::array<bool, 3> periodic_{false, false, false};
+};
+
+} // namespace mpm

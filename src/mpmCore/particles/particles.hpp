@@ -1,0 +1,41 @@
+// Material points as a structure of arrays: one flat array per component,
+// so kernels stream through memory and map directly to OpenMP/CUDA.
+#pragma once
+#include "../types.hpp"
+#include <array>
+#include <vector>
+
+namespace mpm {
+
+struct Particles
+{
+    std::array<std::vector<Real>, 3> x;      // position
+    std::array<std::vector<Real>, 3> v;      // velocity
+    std::vector<Real> mass;
+    std::vector<Real> volume0;               // initial volume
+    std::vector<Real> volume;                // current volume = J volume0
+    std::array<std::vector<Real>, 9> F;      // deformation gradient (row-major)
+    std::array<std::vector<Real>, 6> sigma;  // Cauchy stress (xx yy zz xy yz xz)
+    std::array<std::vector<Real>, 9> C;      // APIC affine velocity matrix
+    std::vector<Real> eqPlasticStrain;       // history of plastic laws
+    std::vector<int> material;               // index into the material list
+    std::vector<std::int64_t> id;            // stable id, for diagnostics
+
+    Index size() const { return Index(mass.size()); }
+
+    void resize(Index n);
+
+    // Appends a point at rest-state kinematics (F = I, C = 0).
+    Index add
+    (
+        const std::array<Real, 3>& pos, const std::array<Real, 3>& vel,
+        Real m, Real vol, int mat
+    );
+
+    // Reorders every array by `order` (new i = old order[i]).
+    void permute(const std::vector<Index>& order);
+
+    Real J(Index p) const;
+};
+
+} // namespace mpm

@@ -1,0 +1,497 @@
+#include "mpmSystem.hpp"
+#include "../transfer/stencil.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <type_traits>
+
+namespace mpm {
+
+void MpmSystem::setup(const Lattice& lattice, const BoundarySpec& spec, const StepOptions& options)
+{
+    lattice_ = lattice;
+    lattice_.finalise();
+    boundary_.build(lattice_, spec);
+    options_ = options;
+    // Gravity along unsolved directions has nothing to act on.
+    for (int a = 0; a < 3; ++a) if (!lattice_.solved[a]) options_.gravity[a] = 0;
+    grid_.resize(lattice_.nNodes);
+}
+
+template<class Fn>
+void MpmSystem::dispatch(Fn&& f)
+{
+    dispatchShape(options_.shape, [&](auto k)
+    {
+        switch (lattice_.dim)
+        {
+            case 1: f(k, std::integral_constant<int, 1>{}); break;
+            case 2: f(k, std::integral_constant<int, 2>{}); break;
+            default: f(k, std::integral_constant<int, 3>{}); break;
+        }
+    });
+}
+
+void MpmSystem::step(Real dt)
+{
+    dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
+    ++stepCount_;
+}
+
+void MpmSystem::mapToGrid()
+{
+    dispatch([&](auto k, auto d)
+    {
+        binning_.build(lattice_, particles_);
+        scatter<decltype(k), decltype(d)::value>(true, false, false);
+        foldGhosts(foldMass | foldMomentum);
+        nodalVelocity(grid_.velocity);
+        fillGhosts(grid_.velocity);
+    });
+}
+
+template<class K, int D>
+void MpmSystem::stepImpl(Real dt)
+{
+    const Index n = particles_.size();
+    for (auto& a : L_) a.resize(n);
+    for (auto& a : dx_) a.resize(n);
+    Real meanMass = 0;
+    for (Index p = 0; p < n; ++p) meanMass += particles_.mass[p];
+    massTolerance_ = n ? 1e-10*meanMass/n : 0;
+
+    const StressUpdate order = options_.stressUpdate;
+    {
+        ScopedTimer t(timers_.p2g);
+        binning_.build(lattice_, particles_);
+        scatter<K, D>(true, order != StressUpdate::USF, false);
+    }
+    {
+        ScopedTimer t(timers_.nodal);
+        if (order != StressUpdate::USF) addGravity();
+        foldGhosts(foldMass | foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
+        nodalVelocity(grid_.velocityOld);
+        fillGhosts(grid_.velocityOld);
+    }
+    if (order == StressUpdate::USF)
+    {
+        { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocityOld); }
+        { ScopedTimer t(timers_.constitutive); updateStress(dt); }
+        { ScopedTimer t(timers_.p2g); scatter<K, D>(false, true, false); }
+        { ScopedTimer t(timers_.nodal); addGravity(); foldGhosts(foldForce); }
+    }
+    {
+        ScopedTimer t(timers_.nodal);
+        nodalUpdate(dt);
+    }
+    {
+        ScopedTimer t(timers_.g2p);
+        gather<K, D>(dt);
+    }
+    if (order == StressUpdate::MUSL)
+    {
+        {
+            ScopedTimer t(timers_.p2g);
+            scatter<K, D>(false, false, true);
+        }
+        {
+            ScopedTimer t(timers_.nodal);
+            foldGhosts(foldMomentum);
+            nodalVelocity(grid_.velocity);
+            applyFriction(grid_.velocity);
+            fillGhosts(grid_.velocity);
+        }
+        { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocity); }
+    }
+    if (order != StressUpdate::USF)
+    {
+        ScopedTimer t(timers_.constitutive);
+        updateStress(dt);
+    }
+    {
+        ScopedTimer t(timers_.g2p);
+        movePoints(dt);
+    }
+}
+
+// P2G. massMomentum: mass, volume and momentum; force: internal force;
+// velocityOnly: momentum only, from the (new) point velocities (MUSL).
+template<class K, int D>
+void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
+{
+    auto& g = grid_;
+    const auto& P = particles_;
+    const Lattice& L = lattice_;
+    const bool apic = options_.transfer == Transfer::apic;
+
+    if (massMomentum || velocityOnly)
+    {
+        for (int d = 0; d < 3; ++d) std::fill(g.momentum[d].begin(), g.momentum[d].end(), 0.0);
+    }
+    if (massMomentum)
+    {
+        std::fill(g.mass.begin(), g.mass.end(), 0.0);
+        std::fill(g.volume.begin(), g.volume.end(), 0.0);
+    }
+    if (force)
+    {
+        for (int d = 0; d < 3; ++d) std::fill(g.force[d].begin(), g.force[d].end(), 0.0);
+    }
+
+    Real* gm = g.mass.data();
+    Real* gv = g.volume.data();
+    Real* gp[3] = {g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()};
+    Real* gf[3] = {g.force[0].data(), g.force[1].data(), g.force[2].data()};
+    const std::vector<Index>& order = binning_.order();
+    const bool doMomentum = massMomentum || velocityOnly;
+
+    for (int c = 0; c < binning_.nColours(); ++c)
+    {
+        const Index k0 = binning_.colourBegin(c), k1 = binning_.colourBegin(c + 1);
+        #pragma omp parallel for schedule(dynamic, 1)
+        for (Index key = k0; key < k1; ++key)
+        {
+            for (Index q = binning_.start(key); q < binning_.start(key + 1); ++q)
+            {
+                const Index p = order[q];
+                Stencil<K, D> s;
+                s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+                const Real m = P.mass[p], vol = P.volume[p];
+                const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
+                Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+                if (apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
+                const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
+                const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
+                s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
+                {
+                    if (massMomentum)
+                    {
+                        gm[I] += N*m;
+                        gv[I] += N*vol;
+                    }
+                    if (doMomentum)
+                    {
+                        Real u0 = v0, u1 = v1, u2 = v2;
+                        if (apic)
+                        {
+                            u0 += Cp[0]*dx[0] + Cp[1]*dx[1] + Cp[2]*dx[2];
+                            u1 += Cp[3]*dx[0] + Cp[4]*dx[1] + Cp[5]*dx[2];
+                            u2 += Cp[6]*dx[0] + Cp[7]*dx[1] + Cp[8]*dx[2];
+                        }
+                        const Real Nm = N*m;
+                        gp[0][I] += Nm*u0; gp[1][I] += Nm*u1; gp[2][I] += Nm*u2;
+                    }
+                    if (force)
+                    {
+                        gf[0][I] -= vol*(sxx*dN[0] + sxy*dN[1] + sxz*dN[2]);
+                        gf[1][I] -= vol*(sxy*dN[0] + syy*dN[1] + syz*dN[2]);
+                        gf[2][I] -= vol*(sxz*dN[0] + syz*dN[1] + szz*dN[2]);
+                    }
+                });
+            }
+        }
+    }
+}
+
+void MpmSystem::addGravity()
+{
+    const auto& gr = options_.gravity;
+    const Index n = lattice_.nNodes;
+    #pragma omp parallel for
+    for (Index I = 0; I < n; ++I)
+    {
+        const Real m = grid_.mass[I];
+        for (int d = 0; d < 3; ++d) grid_.force[d][I] += m*gr[d];
+    }
+}
+
+void MpmSystem::foldGhosts(unsigned what)
+{
+    const bool mass = what & foldMass, momentum = what & foldMomentum, force = what & foldForce;
+    // Serial and in a fixed order: an image may receive from several ghosts.
+    auto& g = grid_;
+    for (const auto& gh : boundary_.ghosts())
+    {
+        if (mass)
+        {
+            g.mass[gh.image] += g.mass[gh.ghost];
+            g.volume[gh.image] += g.volume[gh.ghost];
+        }
+        if (momentum)
+        {
+            for (int d = 0; d < 3; ++d) g.momentum[d][gh.image] += gh.sign[d]*g.momentum[d][gh.ghost];
+        }
+        if (force)
+        {
+            for (int d = 0; d < 3; ++d) g.force[d][gh.image] += gh.sign[d]*g.force[d][gh.ghost];
+        }
+    }
+    // Ghosts then hold their image's values (mass for completeness).
+    for (const auto& gh : boundary_.ghosts())
+    {
+        if (mass)
+        {
+            g.mass[gh.ghost] = g.mass[gh.image];
+            g.volume[gh.ghost] = g.volume[gh.image];
+        }
+    }
+}
+
+void MpmSystem::fillGhosts(std::array<std::vector<Real>, 3>& v) const
+{
+    for (const auto& gh : boundary_.ghosts())
+    {
+        for (int d = 0; d < 3; ++d) v[d][gh.ghost] = gh.sign[d]*v[d][gh.image];
+    }
+}
+
+void MpmSystem::nodalVelocity(std::array<std::vector<Real>, 3>& v) const
+{
+    const Index n = lattice_.nNodes;
+    const Real tol = massTolerance_;
+    #pragma omp parallel for
+    for (Index I = 0; I < n; ++I)
+    {
+        const Real m = grid_.mass[I];
+        const Real inv = m > tol ? 1.0/m : 0.0;
+        for (int d = 0; d < 3; ++d) v[d][I] = grid_.momentum[d][I]*inv;
+    }
+}
+
+void MpmSystem::nodalUpdate(Real dt)
+{
+    const Index n = lattice_.nNodes;
+    const Real tol = massTolerance_;
+    auto& g = grid_;
+    #pragma omp parallel for
+    for (Index I = 0; I < n; ++I)
+    {
+        const Real m = g.mass[I];
+        const Real inv = m > tol ? 1.0/m : 0.0;
+        for (int d = 0; d < 3; ++d)
+        {
+            g.velocity[d][I] = (g.momentum[d][I] + dt*g.force[d][I])*inv;
+        }
+    }
+    applyFriction(g.velocity);
+    fillGhosts(g.velocity);
+}
+
+void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v) const
+{
+    // Coulomb contact on the first node layer (Bardenhagen et al. 2000):
+    // an approaching normal velocity is removed, and the tangential speed is
+    // reduced by mu times that normal velocity change, never reversed.
+    for (const auto& fn : boundary_.frictionNodes())
+    {
+        const Real vn = v[fn.axis][fn.node]*fn.outward;
+        if (vn <= 0) continue;
+        Real vt2 = 0;
+        for (int d = 0; d < 3; ++d) if (d != fn.axis) vt2 += v[d][fn.node]*v[d][fn.node];
+        const Real vt = std::sqrt(vt2);
+        const Real scale = vt > 0 ? std::max(0.0, 1.0 - fn.mu*vn/vt) : 0.0;
+        for (int d = 0; d < 3; ++d) if (d != fn.axis) v[d][fn.node] *= scale;
+        v[fn.axis][fn.node] = 0;
+    }
+}
+
+// G2P: new point velocity (PIC/FLIP blend or APIC), displacement over the
+// step, and the velocity gradient L from the updated grid velocity.
+template<class K, int D>
+void MpmSystem::gather(Real dt)
+{
+    auto& P = particles_;
+    const Lattice& L = lattice_;
+    const Index n = P.size();
+    const Real alpha = options_.flipRatio;
+    const bool apic = options_.transfer == Transfer::apic;
+    const bool lh = std::is_same<K, LinearHat>::value;
+    const Real* vn[3] = {grid_.velocity[0].data(), grid_.velocity[1].data(), grid_.velocity[2].data()};
+    const Real* vo[3] = {grid_.velocityOld[0].data(), grid_.velocityOld[1].data(), grid_.velocityOld[2].data()};
+
+    #pragma omp parallel for schedule(static)
+    for (Index p = 0; p < n; ++p)
+    {
+        Stencil<K, D> s;
+        s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+        Real vPic[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
+        Real Lg[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+        Real Bx[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+        s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
+        {
+            for (int i = 0; i < 3; ++i)
+            {
+                const Real vi = vn[i][I];
+                vPic[i] += N*vi;
+                dv[i] += N*(vi - vo[i][I]);
+                for (int j = 0; j < 3; ++j)
+                {
+                    Lg[3*i + j] += vi*dN[j];
+                    if (apic) Bx[3*i + j] += N*vi*dx[j];
+                }
+            }
+        });
+        for (int i = 0; i < 3; ++i)
+        {
+            P.v[i][p] = apic ? vPic[i] : alpha*(P.v[i][p] + dv[i]) + (1.0 - alpha)*vPic[i];
+            dx_[i][p] = dt*vPic[i];
+        }
+        for (int e = 0; e < 9; ++e) L_[e][p] = Lg[e];
+        if (apic)
+        {
+            // LH: the affine matrix is the velocity gradient (Jiang et al.);
+            // B-splines: C = B D^-1 with D constant per axis.
+            Real Dinv[3];
+            s.apicInertia(L, Dinv);
+            for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+            {
+                P.C[3*i + j][p] = lh ? Lg[3*i + j] : Bx[3*i + j]*Dinv[j];
+            }
+        }
+    }
+}
+
+template<class K, int D>
+void MpmSystem::gradientFromGrid(const std::array<std::vector<Real>, 3>& v)
+{
+    const auto& P = particles_;
+    const Lattice& L = lattice_;
+    const Index n = P.size();
+    #pragma omp parallel for schedule(static)
+    for (Index p = 0; p < n; ++p)
+    {
+        Stencil<K, D> s;
+        s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+        Real Lg[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+        s.forEach(L, [&](Index I, Real, const Real* dN, const Real*)
+        {
+            for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) Lg[3*i + j] += v[i][I]*dN[j];
+        });
+        for (int e = 0; e < 9; ++e) L_[e][p] = Lg[e];
+    }
+}
+
+void MpmSystem::updateStress(Real dt)
+{
+    auto& P = particles_;
+    const Index n = P.size();
+    Index firstBad = n;
+    #pragma omp parallel for schedule(static) reduction(min:firstBad)
+    for (Index p = 0; p < n; ++p)
+    {
+        Real Lp[9], Fo[9], Fn[9], sig[6];
+        for (int e = 0; e < 9; ++e) { Lp[e] = L_[e][p]; Fo[e] = P.F[e][p]; }
+        // F_{n+1} = (I + dt L) F_n
+        for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+        {
+            Real s = Fo[3*i + j];
+            for (int k = 0; k < 3; ++k) s += dt*Lp[3*i + k]*Fo[3*k + j];
+            Fn[3*i + j] = s;
+        }
+        for (int c = 0; c < 6; ++c) sig[c] = P.sigma[c][p];
+        Real ep = P.eqPlasticStrain[p];
+        PointKinematics k{Lp, Fo, Fn, dt};
+        PointStress st{sig, &ep};
+        materials_[P.material[p]]->updateStress(k, st);
+        bool finite = std::isfinite(ep);
+        for (int c = 0; c < 6; ++c) finite = finite && std::isfinite(sig[c]);
+        for (int e = 0; e < 9; ++e) finite = finite && std::isfinite(Fn[e]);
+        if (!finite) { firstBad = std::min(firstBad, p); continue; }
+        for (int e = 0; e < 9; ++e) P.F[e][p] = Fn[e];
+        for (int c = 0; c < 6; ++c) P.sigma[c][p] = sig[c];
+        P.eqPlasticStrain[p] = ep;
+        P.volume[p] = P.volume0[p]*P.J(p);
+    }
+    if (firstBad < n)
+    {
+        std::ostringstream os;
+        os << "non-finite stress or deformation at step " << stepCount_ + 1
+           << " in material point id " << P.id[firstBad]
+           << " (material " << P.material[firstBad] << ")";
+        throw NonFiniteError(os.str(), stepCount_ + 1, P.id[firstBad]);
+    }
+}
+
+void MpmSystem::movePoints(Real dt)
+{
+    (void)dt;
+    auto& P = particles_;
+    const Lattice& L = lattice_;
+    const Index n = P.size();
+    Index firstBad = n;
+    const bool frozen = options_.freezePositions;
+    #pragma omp parallel for schedule(static) reduction(min:firstBad)
+    for (Index p = 0; p < n; ++p)
+    {
+        for (int a = 0; a < 3; ++a)
+        {
+            if (!std::isfinite(P.v[a][p]) || !std::isfinite(dx_[a][p])) { firstBad = std::min(firstBad, p); continue; }
+            if (frozen || !L.solved[a]) continue;
+            Real x = P.x[a][p] + dx_[a][p];
+            const Real lo = L.origin[a], len = L.length(a);
+            if (boundary_.periodic(a))
+            {
+                x = lo + std::fmod(std::fmod(x - lo, len) + len, len);
+            }
+            else
+            {
+                // A wall is impenetrable: a point that would cross it stops
+                // just inside (a large step, not normal operation).
+                const Real eps = 1e-9*L.h;
+                x = std::min(std::max(x, lo + eps), lo + len - eps);
+            }
+            P.x[a][p] = x;
+        }
+    }
+    if (firstBad < n)
+    {
+        std::ostringstream os;
+        os << "non-finite velocity at step " << stepCount_ + 1
+           << " in material point id " << P.id[firstBad];
+        throw NonFiniteError(os.str(), stepCount_ + 1, P.id[firstBad]);
+    }
+}
+
+Real MpmSystem::maxSignalSpeed() const
+{
+    const auto& P = particles_;
+    const Index n = P.size();
+    Real cmax = 0;
+    #pragma omp parallel for reduction(max:cmax)
+    for (Index p = 0; p < n; ++p)
+    {
+        const Real v2 = P.v[0][p]*P.v[0][p] + P.v[1][p]*P.v[1][p] + P.v[2][p]*P.v[2][p];
+        const Real c = materials_[P.material[p]]->waveSpeed(P.J(p)) + std::sqrt(v2);
+        cmax = std::max(cmax, c);
+    }
+    return cmax;
+}
+
+Real MpmSystem::stableDeltaT(Real courant) const
+{
+    const Real c = maxSignalSpeed();
+    Real dt = c > 0 ? courant*lattice_.h/c : std::numeric_limits<Real>::infinity();
+    for (const auto& m : materials_) dt = std::min(dt, m->maxStableDt(lattice_.h));
+    return dt;
+}
+
+Index MpmSystem::countOutside() const
+{
+    Index count = 0;
+    for (Index p = 0; p < particles_.size(); ++p)
+    {
+        for (int a = 0; a < 3; ++a)
+        {
+            if (!lattice_.solved[a]) continue;
+            const Real x = particles_.x[a][p];
+            if (x < lattice_.origin[a] || x > lattice_.origin[a] + lattice_.length(a)) { ++count; break; }
+        }
+    }
+    return count;
+}
+
+} // namespace mpm

@@ -1,0 +1,106 @@
+// One MPM model: lattice, boundary, materials, points and the explicit step.
+//
+//   step(dt):  bin -> P2G -> fold ghosts -> [USF stress] -> nodal update
+//              -> G2P (PIC/FLIP or APIC) -> [USL/MUSL stress] -> move points
+//
+// Every phase is a loop over points or nodes on flat arrays; P2G runs blocks
+// of one colour in parallel (see transfer/binning.hpp), G2P and the stress
+// update are independent per point, so results do not depend on the number
+// of OpenMP threads. The kernels are instantiated per shape function and
+// number of solved directions.
+#pragma once
+#include "../constitutive/constitutiveLaw.hpp"
+#include "../grid/boundary.hpp"
+#include "../grid/gridState.hpp"
+#include "../grid/lattice.hpp"
+#include "../particles/particles.hpp"
+#include "../transfer/binning.hpp"
+#include "stepOptions.hpp"
+#include "stepTimers.hpp"
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace mpm {
+
+// Thrown when a point's velocity or stress stops being finite: nothing is
+// written after it, and the message names the step and point id.
+class NonFiniteError : public std::runtime_error
+{
+public:
+    NonFiniteError(const std::string& what, Index step, std::int64_t id)
+    : std::runtime_error(what), step(step), pointId(id) {}
+    Index step;
+    std::int64_t pointId;
+};
+
+class MpmSystem
+{
+public:
+    void setup(const Lattice& lattice, const BoundarySpec& boundary, const StepOptions& options);
+
+    Lattice& lattice() { return lattice_; }
+    const Lattice& lattice() const { return lattice_; }
+    const Boundary& boundary() const { return boundary_; }
+    const StepOptions& options() const { return options_; }
+    Particles& particles() { return particles_; }
+    const Particles& particles() const { return particles_; }
+    const GridState& grid() const { return grid_; }
+    const StepTimers& timers() const { return timers_; }
+    Index stepCount() const { return stepCount_; }
+    void setStepCount(Index n) { stepCount_ = n; }
+
+    std::vector<std::unique_ptr<ConstitutiveLaw>>& materials() { return materials_; }
+    const ConstitutiveLaw& material(int m) const { return *materials_[m]; }
+
+    // Advances by dt. Throws NonFiniteError on NaN/inf.
+    void step(Real dt);
+
+    // Largest signal speed max_p (c_p + |v_p|) for the Courant number.
+    Real maxSignalSpeed() const;
+
+    // Explicit stable step for Courant number `courant`, also honouring
+    // each law's own bound (e.g. viscous diffusion).
+    Real stableDeltaT(Real courant) const;
+
+    // Maps mass, volume and momentum to the grid at the current positions
+    // and sets grid().velocity; for output at any time.
+    void mapToGrid();
+
+    // Number of points outside the lattice box (seeding checks).
+    Index countOutside() const;
+
+private:
+    template<class K, int D> void stepImpl(Real dt);
+    template<class K, int D> void scatter(bool massMomentum, bool force, bool velocityOnly);
+    template<class K, int D> void gather(Real dt);
+    template<class K, int D> void gradientFromGrid(const std::array<std::vector<Real>, 3>& v);
+    template<class Fn> void dispatch(Fn&& f);
+
+    enum FoldWhat : unsigned { foldMass = 1, foldMomentum = 2, foldForce = 4 };
+    void foldGhosts(unsigned what);
+    void fillGhosts(std::array<std::vector<Real>, 3>& v) const;
+    void nodalVelocity(std::array<std::vector<Real>, 3>& v) const;
+    void addGravity();
+    void nodalUpdate(Real dt);
+    void applyFriction(std::array<std::vector<Real>, 3>& v) const;
+    void updateStress(Real dt);
+    void movePoints(Real dt);
+
+    Lattice lattice_;
+    Boundary boundary_;
+    StepOptions options_;
+    Particles particles_;
+    std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;
+    GridState grid_;
+    Binning binning_;
+    StepTimers timers_;
+    Index stepCount_ = 0;
+    Real massTolerance_ = 0;
+
+    // Scratch per point: velocity gradient and displacement over the step.
+    std::array<std::vector<Real>, 9> L_;
+    std::array<std::vector<Real>, 3> dx_;
+};
+
+} // namespace mpm

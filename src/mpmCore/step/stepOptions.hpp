@@ -1,0 +1,38 @@
+// Algorithmic choices of one MPM step, as selected in constant/mpmProperties.
+#pragma once
+#include "../shapeFunctions/shapeFunctions.hpp"
+#include <array>
+#include <string>
+
+namespace mpm {
+
+// When the stress is updated relative to the momentum update:
+//  USF  - update stress first, from the P2G grid velocity (v^n);
+//  USL  - update stress last, from the updated grid velocity (v^{n+1});
+//  MUSL - after G2P, map the new particle momentum back to the grid and
+//         update stress from that (Sulsky et al. 1994).
+enum class StressUpdate { USF = 0, USL = 1, MUSL = 2 };
+
+// How velocity goes from grid to points: PIC/FLIP blend, or APIC (affine
+// PIC, Jiang et al. 2015), which ignores flipRatio.
+enum class Transfer { picFlip = 0, apic = 1 };
+
+const char* stressUpdateName(StressUpdate s);
+bool parseStressUpdate(const std::string& name, StressUpdate& s);
+const char* validStressUpdateNames();
+
+const char* transferName(Transfer t);
+bool parseTransfer(const std::string& name, Transfer& t);
+const char* validTransferNames();
+
+struct StepOptions
+{
+    ShapeKind shape = ShapeKind::cubicBSpline;
+    Real flipRatio = 0.99;            // alpha: 0 = PIC, 1 = FLIP
+    Transfer transfer = Transfer::picFlip;
+    StressUpdate stressUpdate = StressUpdate::USL;
+    std::array<Real, 3> gravity{0, 0, 0};
+    bool freezePositions = false;     // analysis runs: points do not move
+};
+
+} // namespace mpm
