@@ -1,0 +1,96 @@
+// Particle throughput of the MPM step: a 3D elastic block, 32^3 cells,
+// 8 points per cell (262144 points), linear-elastic, gravity, USL, FLIP 0.99.
+// Prints particle-steps/s for LH, QBS and CBS at 1 and 2 OpenMP threads, all
+// in one run so the ratios share the machine's state.
+//
+//   build/benchmarks/particleThroughput [cells=32] [steps=20]
+#include "constitutive/constitutiveLaw.hpp"
+#include "step/mpmSystem.hpp"
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <omp.h>
+#include <string>
+#include <sys/utsname.h>
+#include <unistd.h>
+
+using namespace mpm;
+
+namespace {
+
+std::string cpuModel()
+{
+    std::ifstream f("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(f, line))
+    {
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    }
+    return "unknown";
+}
+
+MpmSystem makeBlock(ShapeKind shape, int n)
+{
+    // The block is n^3 cells; the lattice adds 4 empty cells on each side.
+    const int m = n + 8;
+    Lattice L;
+    L.h = 1.0/n;
+    L.nCells = {m, m, m};
+    BoundarySpec b;   // no-slip box
+    StepOptions o;
+    o.shape = shape;
+    o.gravity = {0, 0, -9.81};
+    MpmSystem s;
+    s.setup(L, b, o);
+    s.materials().push_back(makeLaw("linearElastic", {{"rho", 1000}, {"E", 1e6}, {"nu", 0.3}}));
+    // Block filling the middle of the box, 2x2x2 points per cell.
+    const int lo = 4, hi = n + 4;
+    const Real h = L.h, vol = h*h*h/8;
+    for (int k = lo; k < hi; ++k)
+    for (int j = lo; j < hi; ++j)
+    for (int i = lo; i < hi; ++i)
+    for (int c = 0; c < 8; ++c)
+    {
+        const Real x = (i + 0.25 + 0.5*(c & 1))*h;
+        const Real y = (j + 0.25 + 0.5*((c >> 1) & 1))*h;
+        const Real z = (k + 0.25 + 0.5*((c >> 2) & 1))*h;
+        s.particles().add({x, y, z}, {0.1, 0, 0}, 1000*vol, vol, 0);
+    }
+    return s;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const int n = argc > 1 ? std::atoi(argv[1]) : 32;
+    const int steps = argc > 2 ? std::atoi(argv[2]) : 20;
+    utsname u; uname(&u);
+    std::printf("# particleThroughput: 3D elastic block of %d^3 cells in a %d^3 lattice, 8 points/cell\n",
+                n, n + 8);
+    std::printf("# machine: %s, %ld cores, %s %s\n", cpuModel().c_str(), sysconf(_SC_NPROCESSORS_ONLN),
+                u.sysname, u.release);
+    std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s\n", "shape", "threads", "points",
+                "ms/step", "Mpoint-step/s", "P2G%", "nodal%", "G2P%", "stress%");
+    const int maxThreads = omp_get_num_procs() < 2 ? 1 : 2;
+    for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
+    for (int threads = 1; threads <= maxThreads; ++threads)
+    {
+        omp_set_num_threads(threads);
+        MpmSystem s = makeBlock(shape, n);
+        const Real dt = s.stableDeltaT(0.5);
+        s.step(dt);   // warm-up: first-touch allocation
+        const StepTimers t0 = s.timers();
+        const auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < steps; ++i) s.step(dt);
+        const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const StepTimers& t = s.timers();
+        const double tot = t.total() - t0.total();
+        std::printf("%-18s %8d %10lld %12.2f %14.3f %10.1f %10.1f %10.1f %10.1f\n", shapeName(shape), threads,
+                    (long long)s.particles().size(), 1e3*sec/steps, s.particles().size()*double(steps)/sec/1e6,
+                    100*(t.p2g - t0.p2g)/tot, 100*(t.nodal - t0.nodal)/tot, 100*(t.g2p - t0.g2p)/tot,
+                    100*(t.constitutive - t0.constitutive)/tot);
+    }
+    return 0;
+}

@@ -1,0 +1,50 @@
+// Isotropic linear (hypo)elasticity.
+//
+// The stress is integrated in rate form with the Jaumann (co-rotational)
+// rate, which makes the update objective: a rigid-body spin rotates the
+// stress instead of creating spurious stress,
+//
+//   sigma_{n+1} = sigma_n + dt*(C:D + W sigma_n - sigma_n W),
+//   C:D = lambda tr(D) I + 2 mu D,
+//
+// with D, W the symmetric and skew parts of the velocity gradient L. The
+// elastic trial of the plasticity models reuses jaumannElasticUpdate().
+#pragma once
+#include "constitutiveLaw.hpp"
+
+namespace mpm {
+
+// Lame coefficients of an isotropic elastic solid.
+struct IsotropicElasticity
+{
+    Real lambda;
+    Real mu;        // shear modulus G
+
+    static IsotropicElasticity fromYoungPoisson(Real E, Real nu);
+    Real bulkModulus() const { return lambda + 2.0*mu/3.0; }
+    Real pWaveModulus() const { return lambda + 2.0*mu; }
+};
+
+// Objective (Jaumann-rate) hypoelastic update of sigma (6 components, in
+// place) over one step with velocity gradient L (row-major 3x3).
+void jaumannElasticUpdate(const IsotropicElasticity& el, const Real* L, Real dt, Real* sigma);
+
+class LinearElastic : public ConstitutiveLaw
+{
+public:
+    LinearElastic(Real rho, Real E, Real nu);
+    static std::unique_ptr<ConstitutiveLaw> create(const Coefficients& c);
+
+    const char* typeName() const override { return "linearElastic"; }
+    void updateStress(const PointKinematics& k, PointStress& s) const override;
+    // Dilatational wave speed sqrt((lambda + 2 mu)/rho0); J is ignored
+    // because the hypoelastic tangent does not depend on the deformation.
+    Real waveSpeed(Real J) const override;
+
+    const IsotropicElasticity& elasticity() const { return el_; }
+
+private:
+    IsotropicElasticity el_;
+};
+
+} // namespace mpm

@@ -1,0 +1,38 @@
+#include "neoHookean.hpp"
+#include "tensorOps.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace mpm {
+
+NeoHookean::NeoHookean(Real rho, Real E, Real nu)
+:
+    el_(IsotropicElasticity::fromYoungPoisson(E, nu))
+{
+    rho0_ = rho;
+}
+
+std::unique_ptr<ConstitutiveLaw> NeoHookean::create(const Coefficients& c)
+{
+    return std::make_unique<NeoHookean>(c.at("rho"), c.at("E"), c.at("nu"));
+}
+
+void NeoHookean::updateStress(const PointKinematics& k, PointStress& s) const
+{
+    using namespace tensor;
+    const Real J = det(k.Fnew);
+    const Sym6 B = selfOuterT(k.Fnew);
+    const Real muOverJ = el_.mu/J;
+    const Real volumetric = el_.lambda*std::log(J)/J;
+    for (int a = 0; a < 6; ++a) s.sigma[a] = muOverJ*B[a];
+    for (int a = 0; a < 3; ++a) s.sigma[a] += volumetric - muOverJ;
+}
+
+Real NeoHookean::waveSpeed(Real J) const
+{
+    const Real reference = el_.pWaveModulus();
+    const Real current = reference - 2.0*el_.lambda*std::log(J);
+    return std::sqrt(std::max(reference, current)/rho0_);
+}
+
+} // namespace mpm
