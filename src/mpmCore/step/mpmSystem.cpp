@@ -33,6 +33,26 @@ void MpmSystem::dispatch(Fn&& f)
     });
 }
 
+// Runs fn(p) for every point, blocks of one colour in parallel, so that fn
+// may scatter to its stencil's nodes with plain stores (transfer/binning.hpp).
+template<class Fn>
+void MpmSystem::forEachPointColoured(Fn&& fn) const
+{
+    const std::vector<Index>& order = binning_.order();
+    for (int c = 0; c < binning_.nColours(); ++c)
+    {
+        const Index k0 = binning_.colourBegin(c), k1 = binning_.colourBegin(c + 1);
+        #pragma omp parallel for schedule(dynamic, 1)
+        for (Index key = k0; key < k1; ++key)
+        {
+            for (Index q = binning_.start(key); q < binning_.start(key + 1); ++q)
+            {
+                fn(order[q]);
+            }
+        }
+    }
+}
+
 void MpmSystem::step(Real dt)
 {
     dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
@@ -41,12 +61,13 @@ void MpmSystem::step(Real dt)
 
 void MpmSystem::mapToGrid()
 {
+    updateMassTolerance();
     dispatch([&](auto k, auto d)
     {
         binning_.build(lattice_, particles_);
         scatter<decltype(k), decltype(d)::value>(true, false, false);
         foldGhosts(foldMass | foldMomentum);
-        nodalVelocity(grid_.velocity);
+        massToVelocity<decltype(k), decltype(d)::value>(grid_.velocity);
         fillGhosts(grid_.velocity);
     });
 }
@@ -57,9 +78,7 @@ void MpmSystem::stepImpl(Real dt)
     const Index n = particles_.size();
     for (auto& a : L_) a.resize(n);
     for (auto& a : dx_) a.resize(n);
-    Real meanMass = 0;
-    for (Index p = 0; p < n; ++p) meanMass += particles_.mass[p];
-    massTolerance_ = n ? 1e-10*meanMass/n : 0;
+    updateMassTolerance();
 
     const StressUpdate order = options_.stressUpdate;
     {
@@ -71,7 +90,7 @@ void MpmSystem::stepImpl(Real dt)
         ScopedTimer t(timers_.nodal);
         if (order != StressUpdate::USF) addGravity();
         foldGhosts(foldMass | foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
-        nodalVelocity(grid_.velocityOld);
+        massToVelocity<K, D>(grid_.velocityOld);
         fillGhosts(grid_.velocityOld);
     }
     if (order == StressUpdate::USF)
@@ -83,7 +102,7 @@ void MpmSystem::stepImpl(Real dt)
     }
     {
         ScopedTimer t(timers_.nodal);
-        nodalUpdate(dt);
+        nodalUpdate<K, D>(dt);
     }
     {
         ScopedTimer t(timers_.g2p);
@@ -98,7 +117,7 @@ void MpmSystem::stepImpl(Real dt)
         {
             ScopedTimer t(timers_.nodal);
             foldGhosts(foldMomentum);
-            nodalVelocity(grid_.velocity);
+            massToVelocity<K, D>(grid_.velocity);
             applyFriction(grid_.velocity);
             fillGhosts(grid_.velocity);
         }
@@ -143,55 +162,55 @@ void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
     Real* gv = g.volume.data();
     Real* gp[3] = {g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()};
     Real* gf[3] = {g.force[0].data(), g.force[1].data(), g.force[2].data()};
-    const std::vector<Index>& order = binning_.order();
     const bool doMomentum = massMomentum || velocityOnly;
 
-    for (int c = 0; c < binning_.nColours(); ++c)
+    forEachPointColoured([&](Index p)
     {
-        const Index k0 = binning_.colourBegin(c), k1 = binning_.colourBegin(c + 1);
-        #pragma omp parallel for schedule(dynamic, 1)
-        for (Index key = k0; key < k1; ++key)
+        Stencil<K, D> s;
+        s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+        const Real m = P.mass[p], vol = P.volume[p];
+        const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
+        Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+        if (apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
+        const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
+        const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
+        s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
         {
-            for (Index q = binning_.start(key); q < binning_.start(key + 1); ++q)
+            if (massMomentum)
             {
-                const Index p = order[q];
-                Stencil<K, D> s;
-                s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
-                const Real m = P.mass[p], vol = P.volume[p];
-                const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
-                Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-                if (apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
-                const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
-                const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
-                s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
-                {
-                    if (massMomentum)
-                    {
-                        gm[I] += N*m;
-                        gv[I] += N*vol;
-                    }
-                    if (doMomentum)
-                    {
-                        Real u0 = v0, u1 = v1, u2 = v2;
-                        if (apic)
-                        {
-                            u0 += Cp[0]*dx[0] + Cp[1]*dx[1] + Cp[2]*dx[2];
-                            u1 += Cp[3]*dx[0] + Cp[4]*dx[1] + Cp[5]*dx[2];
-                            u2 += Cp[6]*dx[0] + Cp[7]*dx[1] + Cp[8]*dx[2];
-                        }
-                        const Real Nm = N*m;
-                        gp[0][I] += Nm*u0; gp[1][I] += Nm*u1; gp[2][I] += Nm*u2;
-                    }
-                    if (force)
-                    {
-                        gf[0][I] -= vol*(sxx*dN[0] + sxy*dN[1] + sxz*dN[2]);
-                        gf[1][I] -= vol*(sxy*dN[0] + syy*dN[1] + syz*dN[2]);
-                        gf[2][I] -= vol*(sxz*dN[0] + syz*dN[1] + szz*dN[2]);
-                    }
-                });
+                gm[I] += N*m;
+                gv[I] += N*vol;
             }
-        }
-    }
+            if (doMomentum)
+            {
+                Real u0 = v0, u1 = v1, u2 = v2;
+                if (apic)
+                {
+                    u0 += Cp[0]*dx[0] + Cp[1]*dx[1] + Cp[2]*dx[2];
+                    u1 += Cp[3]*dx[0] + Cp[4]*dx[1] + Cp[5]*dx[2];
+                    u2 += Cp[6]*dx[0] + Cp[7]*dx[1] + Cp[8]*dx[2];
+                }
+                const Real Nm = N*m;
+                gp[0][I] += Nm*u0; gp[1][I] += Nm*u1; gp[2][I] += Nm*u2;
+            }
+            if (force)
+            {
+                gf[0][I] -= vol*(sxx*dN[0] + sxy*dN[1] + sxz*dN[2]);
+                gf[1][I] -= vol*(sxy*dN[0] + syy*dN[1] + syz*dN[2]);
+                gf[2][I] -= vol*(sxz*dN[0] + syz*dN[1] + szz*dN[2]);
+            }
+        });
+    });
+}
+
+void MpmSystem::updateMassTolerance()
+{
+    // Nodes lighter than this (a point at the far edge of a stencil) get
+    // zero velocity rather than a ratio of round-off.
+    const Index n = particles_.size();
+    Real total = 0;
+    for (Index p = 0; p < n; ++p) total += particles_.mass[p];
+    massTolerance_ = n ? 1e-10*total/n : 0;
 }
 
 void MpmSystem::addGravity()
@@ -218,15 +237,9 @@ void MpmSystem::foldGhosts(unsigned what)
             g.mass[gh.image] += g.mass[gh.ghost];
             g.volume[gh.image] += g.volume[gh.ghost];
         }
-        if (momentum)
-        {
-            for (int d = 0; d < 3; ++d) g.momentum[d][gh.image] += gh.sign[d]*g.momentum[d][gh.ghost];
-        }
-        if (force)
-        {
-            for (int d = 0; d < 3; ++d) g.force[d][gh.image] += gh.sign[d]*g.force[d][gh.ghost];
-        }
     }
+    if (momentum) foldVector(g.momentum);
+    if (force) foldVector(g.force);
     // Ghosts then hold their image's values (mass for completeness).
     for (const auto& gh : boundary_.ghosts())
     {
@@ -235,6 +248,14 @@ void MpmSystem::foldGhosts(unsigned what)
             g.mass[gh.ghost] = g.mass[gh.image];
             g.volume[gh.ghost] = g.volume[gh.image];
         }
+    }
+}
+
+void MpmSystem::foldVector(std::array<std::vector<Real>, 3>& a) const
+{
+    for (const auto& gh : boundary_.ghosts())
+    {
+        for (int d = 0; d < 3; ++d) a[d][gh.image] += gh.sign[d]*a[d][gh.ghost];
     }
 }
 
@@ -259,23 +280,89 @@ void MpmSystem::nodalVelocity(std::array<std::vector<Real>, 3>& v) const
     }
 }
 
+template<class K, int D>
+void MpmSystem::massToVelocity(std::array<std::vector<Real>, 3>& v)
+{
+    if (options_.massMatrix == MassMatrix::lumped) nodalVelocity(v);
+    else solveMass<K, D>(grid_.momentum, v);
+}
+
+template<class K, int D>
 void MpmSystem::nodalUpdate(Real dt)
 {
     const Index n = lattice_.nNodes;
-    const Real tol = massTolerance_;
     auto& g = grid_;
+    for (auto& a : nodeRhs_) a.resize(n);
     #pragma omp parallel for
     for (Index I = 0; I < n; ++I)
     {
-        const Real m = g.mass[I];
-        const Real inv = m > tol ? 1.0/m : 0.0;
-        for (int d = 0; d < 3; ++d)
-        {
-            g.velocity[d][I] = (g.momentum[d][I] + dt*g.force[d][I])*inv;
-        }
+        for (int d = 0; d < 3; ++d) nodeRhs_[d][I] = g.momentum[d][I] + dt*g.force[d][I];
     }
+    solveMass<K, D>(nodeRhs_, g.velocity);
     applyFriction(g.velocity);
     fillGhosts(g.velocity);
+}
+
+// x = M^-1 rhs for the lumped mass, or the consistent mass approximated by
+// Jacobi sweeps x <- x + M_L^-1 (rhs - M_C x), where M_C x is evaluated
+// matrix-free as the P2G of m_p times the G2P of x. Low wavenumbers converge
+// fast (the error shrinks like ((kh)^2/3)^sweeps); the highest ones keep a
+// lumped-like mass, so the scheme stays bounded where M_C is singular.
+template<class K, int D>
+void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x)
+{
+    const Index nNodes = lattice_.nNodes;
+    const Real tol = massTolerance_;
+    const auto& m = grid_.mass;
+    #pragma omp parallel for
+    for (Index I = 0; I < nNodes; ++I)
+    {
+        const Real inv = m[I] > tol ? 1.0/m[I] : 0.0;
+        for (int d = 0; d < 3; ++d) x[d][I] = rhs[d][I]*inv;
+    }
+    if (options_.massMatrix == MassMatrix::lumped) return;
+
+    fillGhosts(x);
+    auto& P = particles_;
+    const Lattice& L = lattice_;
+    const Index nPoints = P.size();
+    for (auto& a : pointScratch_) a.resize(nPoints);
+    for (auto& a : nodeScratch_) a.resize(nNodes);
+    Real* Mx[3] = {nodeScratch_[0].data(), nodeScratch_[1].data(), nodeScratch_[2].data()};
+    for (int sweep = 0; sweep < options_.consistentMassIterations; ++sweep)
+    {
+        #pragma omp parallel for schedule(static)
+        for (Index p = 0; p < nPoints; ++p)
+        {
+            Stencil<K, D> s;
+            s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+            Real u[3] = {0, 0, 0};
+            s.forEach(L, [&](Index I, Real N, const Real*, const Real*)
+            {
+                for (int d = 0; d < 3; ++d) u[d] += N*x[d][I];
+            });
+            for (int d = 0; d < 3; ++d) pointScratch_[d][p] = P.mass[p]*u[d];
+        }
+        for (auto& a : nodeScratch_) std::fill(a.begin(), a.end(), 0.0);
+        forEachPointColoured([&](Index p)
+        {
+            Stencil<K, D> s;
+            s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+            const Real u0 = pointScratch_[0][p], u1 = pointScratch_[1][p], u2 = pointScratch_[2][p];
+            s.forEach(L, [&](Index I, Real N, const Real*, const Real*)
+            {
+                Mx[0][I] += N*u0; Mx[1][I] += N*u1; Mx[2][I] += N*u2;
+            });
+        });
+        foldVector(nodeScratch_);
+        #pragma omp parallel for
+        for (Index I = 0; I < nNodes; ++I)
+        {
+            const Real inv = m[I] > tol ? 1.0/m[I] : 0.0;
+            for (int d = 0; d < 3; ++d) x[d][I] += (rhs[d][I] - Mx[d][I])*inv;
+        }
+        fillGhosts(x);
+    }
 }
 
 void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v) const

@@ -75,14 +75,19 @@ private:
     template<class K, int D> void scatter(bool massMomentum, bool force, bool velocityOnly);
     template<class K, int D> void gather(Real dt);
     template<class K, int D> void gradientFromGrid(const std::array<std::vector<Real>, 3>& v);
+    template<class K, int D> void solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x);
     template<class Fn> void dispatch(Fn&& f);
+    template<class Fn> void forEachPointColoured(Fn&& fn) const;
 
     enum FoldWhat : unsigned { foldMass = 1, foldMomentum = 2, foldForce = 4 };
     void foldGhosts(unsigned what);
+    void foldVector(std::array<std::vector<Real>, 3>& a) const;
     void fillGhosts(std::array<std::vector<Real>, 3>& v) const;
     void nodalVelocity(std::array<std::vector<Real>, 3>& v) const;
+    void updateMassTolerance();
     void addGravity();
-    void nodalUpdate(Real dt);
+    template<class K, int D> void nodalUpdate(Real dt);
+    template<class K, int D> void massToVelocity(std::array<std::vector<Real>, 3>& v);
     void applyFriction(std::array<std::vector<Real>, 3>& v) const;
     void updateStress(Real dt);
     void movePoints(Real dt);
@@ -101,6 +106,10 @@ private:
     // Scratch per point: velocity gradient and displacement over the step.
     std::array<std::vector<Real>, 9> L_;
     std::array<std::vector<Real>, 3> dx_;
+
+    // Scratch for the consistent-mass sweeps: per point and per node.
+    std::array<std::vector<Real>, 3> pointScratch_;
+    std::array<std::vector<Real>, 3> nodeScratch_, nodeRhs_;
 };
 
 } // namespace mpm

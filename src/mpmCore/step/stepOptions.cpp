@@ -2,6 +2,20 @@
 
 namespace mpm {
 
+const char* massMatrixName(MassMatrix m)
+{
+    return m == MassMatrix::consistent ? "consistent" : "lumped";
+}
+
+bool parseMassMatrix(const std::string& name, MassMatrix& m)
+{
+    if (name == "lumped") { m = MassMatrix::lumped; return true; }
+    if (name == "consistent") { m = MassMatrix::consistent; return true; }
+    return false;
+}
+
+const char* validMassMatrixNames() { return "lumped consistent"; }
+
 const char* stressUpdateName(StressUpdate s)
 {
     switch (s)

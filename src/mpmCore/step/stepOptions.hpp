@@ -17,6 +17,16 @@ enum class StressUpdate { USF = 0, USL = 1, MUSL = 2 };
 // PIC, Jiang et al. 2015), which ignores flipRatio.
 enum class Transfer { picFlip = 0, apic = 1 };
 
+// Nodal mass matrix: lumped (row sums, the MPM standard) or consistent
+// M_IJ = sum_p m_p N_I N_J, inverted approximately by a few Jacobi sweeps
+// preconditioned with the lumped mass. Consistent mass removes most of the
+// O((kh)^2) dispersion of B-spline MPM; each sweep costs one G2P + P2G.
+enum class MassMatrix { lumped = 0, consistent = 1 };
+
+const char* massMatrixName(MassMatrix m);
+bool parseMassMatrix(const std::string& name, MassMatrix& m);
+const char* validMassMatrixNames();
+
 const char* stressUpdateName(StressUpdate s);
 bool parseStressUpdate(const std::string& name, StressUpdate& s);
 const char* validStressUpdateNames();
@@ -31,6 +41,8 @@ struct StepOptions
     Real flipRatio = 0.99;            // alpha: 0 = PIC, 1 = FLIP
     Transfer transfer = Transfer::picFlip;
     StressUpdate stressUpdate = StressUpdate::USL;
+    MassMatrix massMatrix = MassMatrix::lumped;
+    int consistentMassIterations = 2;  // Jacobi sweeps for consistent mass
     std::array<Real, 3> gravity{0, 0, 0};
     bool freezePositions = false;     // analysis runs: points do not move
 };

@@ -1,0 +1,74 @@
+"""Post-processing helpers for mpmFoam cases (numpy only; plots use matplotlib).
+
+Reads the solver's postProcessing/mpmSummary/*/summary.dat and the ASCII
+lagrangian fields of the materialPoints cloud.
+"""
+import glob
+import os
+import re
+
+import numpy as np
+
+
+def read_summary(case="."):
+    """Rows of every summary.dat of the case, sorted by time, duplicates
+    (restarts) resolved in favour of the later run."""
+    rows = []
+    for f in sorted(glob.glob(os.path.join(case, "postProcessing", "mpmSummary", "*", "summary.dat")),
+                    key=lambda p: float(os.path.basename(os.path.dirname(p)))):
+        d = np.loadtxt(f, comments="#", ndmin=2)
+        if rows:
+            rows = [r[r[:, 0] < d[0, 0]] for r in rows]
+        rows.append(d)
+    data = np.vstack(rows)
+    names = ["time", "kineticEnergy", "elasticEnergy", "Ux", "Uy", "Uz", "maxU"]
+    return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def times(case="."):
+    """Write times that hold a materialPoints cloud, ascending."""
+    out = []
+    for d in os.listdir(case):
+        try:
+            t = float(d)
+        except ValueError:
+            continue
+        if os.path.isdir(os.path.join(case, d, "lagrangian", "materialPoints")):
+            out.append((t, d))
+    return [d for _, d in sorted(out)]
+
+
+_number = r"[-+0-9.eEinfINFnaN]+"
+
+
+def read_cloud_field(case, time, name):
+    """An ASCII IOField of the materialPoints cloud as a numpy array
+    (n,) for scalars/labels, (n, k) for vectors and tensors."""
+    path = os.path.join(case, time, "lagrangian", "materialPoints", name)
+    with open(path) as f:
+        text = f.read()
+    body = text[text.index("}", text.index("FoamFile")) + 1:]
+    body = re.sub(r"//.*", "", body)
+    m = re.search(r"(\d+)\s*\(", body)
+    if m is None:
+        # uniform list: N{value}
+        m = re.search(r"(\d+)\s*\{\s*(.*?)\s*\}", body, re.S)
+        n = int(m.group(1))
+        vals = [float(x) for x in re.findall(_number, m.group(2))]
+        return np.tile(vals, (n, 1)).squeeze()
+    n = int(m.group(1))
+    inner = body[m.end():body.rindex(")")]
+    vals = np.array([float(x) for x in re.findall(_number, inner)])
+    if n == 0:
+        return vals
+    return vals.reshape(n, -1).squeeze() if vals.size != n else vals
+
+
+def read_positions(case, time):
+    """Point positions (n, 3) from the 'positions' file (x y z celli)."""
+    path = os.path.join(case, time, "lagrangian", "materialPoints", "positions")
+    with open(path) as f:
+        text = f.read()
+    body = text[text.index("}", text.index("FoamFile")) + 1:]
+    rows = re.findall(r"\(\s*(" + _number + r")\s+(" + _number + r")\s+(" + _number + r")\s*\)", body)
+    return np.array([[float(a), float(b), float(c)] for a, b, c in rows])

@@ -1,0 +1,170 @@
+#include "materialPointsIO.H"
+#include "passiveParticleCloud.H"
+#include "IOField.H"
+#include "symmTensor.H"
+#include "tensor.H"
+
+const Foam::word Foam::materialPointsCloudName("materialPoints");
+
+namespace
+{
+
+using namespace Foam;
+
+// OpenFOAM's symmTensor is (xx xy xz yy yz zz); the core's is
+// (xx yy zz xy yz xz).
+const int symmToCore[6] = {mpm::XX, mpm::XY, mpm::XZ, mpm::YY, mpm::YZ, mpm::ZZ};
+
+// Visits every per-point array with its OpenFOAM field name and type, so
+// reading and writing share one list. `Real` arrays are scalar fields.
+template<class Points, class Visitor>
+void forEachField(Points& p, Visitor&& v)
+{
+    v.vectorField("U", p.v);
+    v.scalarField("mass", p.mass);
+    v.scalarField("volume", p.volume);
+    v.scalarField("volume0", p.volume0);
+    v.scalarField("plasticStrain", p.eqPlasticStrain);
+    v.symmTensorField("stress", p.sigma);
+    v.tensorField("F", p.F);
+    v.tensorField("C", p.C);
+}
+
+struct Writer
+{
+    const passiveParticleCloud& cloud;
+    label n;
+
+    void scalarField(const char* name, const std::vector<mpm::Real>& a) const
+    {
+        IOField<scalar> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
+        forAll(f, i) f[i] = a[i];
+        f.write();
+    }
+    void vectorField(const char* name, const std::array<std::vector<mpm::Real>, 3>& a) const
+    {
+        IOField<vector> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
+        forAll(f, i) f[i] = vector(a[0][i], a[1][i], a[2][i]);
+        f.write();
+    }
+    void symmTensorField(const char* name, const std::array<std::vector<mpm::Real>, 6>& a) const
+    {
+        IOField<symmTensor> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
+        forAll(f, i) for (int c = 0; c < 6; ++c) f[i][c] = a[symmToCore[c]][i];
+        f.write();
+    }
+    void tensorField(const char* name, const std::array<std::vector<mpm::Real>, 9>& a) const
+    {
+        IOField<tensor> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
+        forAll(f, i) for (int c = 0; c < 9; ++c) f[i][c] = a[c][i];
+        f.write();
+    }
+};
+
+struct Reader
+{
+    const passiveParticleCloud& cloud;
+    label n;
+
+    template<class Type>
+    IOField<Type> read(const char* name) const
+    {
+        IOobject io(cloud.fieldIOobject(name, IOobject::MUST_READ));
+        if (!io.typeHeaderOk<IOField<Type>>(true))
+        {
+            FatalErrorInFunction
+                << "Material-point field " << name << " is missing in "
+                << io.path() << nl << "Re-seed with mpmSetParticles."
+                << exit(FatalError);
+        }
+        IOField<Type> f(io);
+        if (f.size() != n)
+        {
+            FatalErrorInFunction
+                << "Material-point field " << io.objectPath() << " has "
+                << f.size() << " values for " << n << " points"
+                << exit(FatalError);
+        }
+        return f;
+    }
+    void scalarField(const char* name, std::vector<mpm::Real>& a) const
+    {
+        const IOField<scalar> f(read<scalar>(name));
+        forAll(f, i) a[i] = f[i];
+    }
+    void vectorField(const char* name, std::array<std::vector<mpm::Real>, 3>& a) const
+    {
+        const IOField<vector> f(read<vector>(name));
+        forAll(f, i) for (int c = 0; c < 3; ++c) a[c][i] = f[i][c];
+    }
+    void symmTensorField(const char* name, std::array<std::vector<mpm::Real>, 6>& a) const
+    {
+        const IOField<symmTensor> f(read<symmTensor>(name));
+        forAll(f, i) for (int c = 0; c < 6; ++c) a[symmToCore[c]][i] = f[i][c];
+    }
+    void tensorField(const char* name, std::array<std::vector<mpm::Real>, 9>& a) const
+    {
+        const IOField<tensor> f(read<tensor>(name));
+        forAll(f, i) for (int c = 0; c < 9; ++c) a[c][i] = f[i][c];
+    }
+};
+
+} // namespace
+
+void Foam::writeMaterialPoints
+(
+    const fvMesh& mesh,
+    const meshLattice& ml,
+    const mpm::Particles& points
+)
+{
+    passiveParticleCloud cloud(mesh, materialPointsCloudName, IDLList<passiveParticle>());
+    const label n = points.size();
+    for (label p = 0; p < n; ++p)
+    {
+        const point x(points.x[0][p], points.x[1][p], points.x[2][p]);
+        label ijk[3];
+        ml.indicesOf(x, ijk);
+        cloud.addParticle(new passiveParticle(mesh, x, ml.cellOf(ijk[0], ijk[1], ijk[2])));
+    }
+    cloud.write();
+
+    forEachField(points, Writer{cloud, n});
+
+    IOField<scalar> J(cloud.fieldIOobject("J", IOobject::NO_READ), n);
+    forAll(J, i) J[i] = points.J(i);
+    J.write();
+    IOField<label> mat(cloud.fieldIOobject("material", IOobject::NO_READ), n);
+    forAll(mat, i) mat[i] = points.material[i];
+    mat.write();
+    IOField<label> id(cloud.fieldIOobject("pointId", IOobject::NO_READ), n);
+    forAll(id, i) id[i] = label(points.id[i]);
+    id.write();
+}
+
+void Foam::readMaterialPoints(const fvMesh& mesh, mpm::Particles& points)
+{
+    passiveParticleCloud cloud(mesh, materialPointsCloudName);
+    const label n = cloud.size();
+    if (n == 0)
+    {
+        FatalErrorInFunction
+            << "No material points in " << mesh.time().timePath()/cloud::prefix
+            /materialPointsCloudName << nl
+            << "Seed them with mpmSetParticles (system/mpmSetParticlesDict)."
+            << exit(FatalError);
+    }
+    points.resize(n);
+    label i = 0;
+    for (const passiveParticle& p : cloud)
+    {
+        const point x(p.position());
+        for (int c = 0; c < 3; ++c) points.x[c][i] = x[c];
+        ++i;
+    }
+    const Reader reader{cloud, n};
+    forEachField(points, reader);
+    const IOField<label> mat(reader.read<label>("material"));
+    const IOField<label> id(reader.read<label>("pointId"));
+    forAll(mat, j) { points.material[j] = mat[j]; points.id[j] = id[j]; }
+}

@@ -1,0 +1,70 @@
+#include "mpmControls.H"
+#include "choice.H"
+#include "uniformDimensionedFields.H"
+#include "Time.H"
+
+Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
+{
+    Info<< "MPM controls:" << nl;
+    step.shape = readChoice
+    (
+        d, "shapeFunction", mpm::parseShape,
+        [](mpm::ShapeKind k) { return mpm::shapeName(k); },
+        mpm::validShapeNames(), mpm::ShapeKind::cubicBSpline
+    );
+    step.transfer = readChoice
+    (
+        d, "transfer", mpm::parseTransfer,
+        [](mpm::Transfer t) { return mpm::transferName(t); },
+        mpm::validTransferNames(), mpm::Transfer::picFlip
+    );
+    step.flipRatio = readBounded(d, "flipRatio", 0.99, 0, 1);
+    step.stressUpdate = readChoice
+    (
+        d, "stressUpdate", mpm::parseStressUpdate,
+        [](mpm::StressUpdate s) { return mpm::stressUpdateName(s); },
+        mpm::validStressUpdateNames(), mpm::StressUpdate::USL
+    );
+    step.massMatrix = readChoice
+    (
+        d, "massMatrix", mpm::parseMassMatrix,
+        [](mpm::MassMatrix m) { return mpm::massMatrixName(m); },
+        mpm::validMassMatrixNames(), mpm::MassMatrix::lumped
+    );
+    if (step.massMatrix == mpm::MassMatrix::consistent)
+    {
+        step.consistentMassIterations =
+            int(readBounded(d, "consistentMassIterations", 2, 1, 50));
+    }
+    step.freezePositions = d.getOrDefault<bool>("freezePositions", false);
+    Info<< "    freezePositions " << step.freezePositions << nl;
+    logInterval = label(readBounded(d, "logInterval", 1, 1, labelMax));
+
+    const dictionary& ts = d.subOrEmptyDict("timeStep");
+    const word type(ts.getOrDefault<word>("type", "adaptive"));
+    if (type != "adaptive" && type != "fixed")
+    {
+        FatalIOErrorInFunction(ts)
+            << "Unknown timeStep type '" << type << "'" << nl
+            << "Valid timeStep types: adaptive fixed" << exit(FatalIOError);
+    }
+    adaptive = type == "adaptive";
+    Info<< "    timeStep " << type << nl;
+    if (adaptive)
+    {
+        courant = readBounded(ts, "courant", 0.5, SMALL, 10);
+        maxDeltaT = readBounded(ts, "maxDeltaT", GREAT, SMALL, GREAT);
+    }
+
+    IOobject gIO("g", mesh.time().constant(), mesh, IOobject::READ_IF_PRESENT, IOobject::NO_WRITE);
+    if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+    {
+        const uniformDimensionedVectorField g(gIO);
+        for (direction c = 0; c < 3; ++c) step.gravity[c] = g.value()[c];
+        Info<< "    gravity " << g.value() << " (constant/g)" << nl;
+    }
+    else
+    {
+        Info<< "    gravity (0 0 0) (no constant/g)" << nl;
+    }
+}

@@ -1,0 +1,195 @@
+#include "mpmModel.H"
+#include "wallConditions.H"
+#include "materialPointsIO.H"
+#include "Time.H"
+#include "clockTime.H"
+#include <omp.h>
+
+Foam::mpmModel::mpmModel(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    dict_
+    (
+        IOobject("mpmProperties", mesh.time().constant(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE)
+    ),
+    lattice_(mesh),
+    materials_(dict_),
+    controls_(mesh, dict_),
+    alphaSolid_
+    (
+        IOobject("alpha.solid", mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh, dimensionedScalar(dimless, Zero)
+    ),
+    Usolid_
+    (
+        IOobject("U.solid", mesh.time().timeName(), mesh,
+            IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh, dimensionedVector(dimVelocity, Zero)
+    )
+{
+    lattice_.report(Info);
+    system_.setup(lattice_.lattice(), readWallConditions(mesh, lattice_, dict_), controls_.step);
+    for (label m = 0; m < materials_.size(); ++m)
+    {
+        system_.materials().push_back(materials_.create(m));
+    }
+
+    readMaterialPoints(mesh, system_.particles());
+    const mpm::Particles& P = system_.particles();
+    for (mpm::Index p = 0; p < P.size(); ++p)
+    {
+        if (P.material[p] < 0 || P.material[p] >= materials_.size())
+        {
+            FatalErrorInFunction
+                << "Material point " << P.id[p] << " has material index "
+                << P.material[p] << " but mpmProperties defines "
+                << materials_.size() << " materials " << materials_.names()
+                << exit(FatalError);
+        }
+    }
+    const mpm::Index outside = system_.countOutside();
+    if (outside)
+    {
+        FatalErrorInFunction
+            << outside << " material points lie outside the mesh"
+            << exit(FatalError);
+    }
+    Info<< "Material points: " << label(P.size()) << ", OpenMP threads: "
+        << omp_get_max_threads() << nl << endl;
+    system_.mapToGrid();
+    updateFields();
+}
+
+Foam::scalar Foam::mpmModel::deltaT() const
+{
+    if (!controls_.adaptive) return mesh_.time().deltaTValue();
+    return min(system_.stableDeltaT(controls_.courant), controls_.maxDeltaT);
+}
+
+Foam::scalar Foam::mpmModel::courantNumber(scalar dt) const
+{
+    return system_.maxSignalSpeed()*dt/lattice_.lattice().h;
+}
+
+void Foam::mpmModel::evolve(scalar dt)
+{
+    try
+    {
+        system_.step(dt);
+    }
+    catch (const mpm::NonFiniteError& e)
+    {
+        FatalErrorInFunction
+            << "Stopping at time " << mesh_.time().timeName() << ": "
+            << e.what() << nl
+            << "Nothing was written for this time. Reduce the time step "
+            << "(timeStep courant) or check the material coefficients."
+            << exit(FatalError);
+    }
+    ++steps_;
+}
+
+void Foam::mpmModel::updateFields()
+{
+    const mpm::GridState& g = system_.grid();
+    const labelList& node = lattice_.cellNode();
+    forAll(node, celli)
+    {
+        alphaSolid_[celli] = g.volume[node[celli]]/mesh_.cellVolumes()[celli];
+        Usolid_[celli] = vector(g.velocity[0][node[celli]],
+            g.velocity[1][node[celli]], g.velocity[2][node[celli]]);
+    }
+    alphaSolid_.correctBoundaryConditions();
+    Usolid_.correctBoundaryConditions();
+}
+
+void Foam::mpmModel::write()
+{
+    if (!mesh_.time().writeTime()) return;
+    const clockTime timer;
+    // The step leaves the lattice at the start-of-step positions; map again
+    // so fields and points describe the same instant.
+    system_.mapToGrid();
+    updateFields();
+    writeMaterialPoints(mesh_, lattice_, system_.particles());
+    ioTime_ += timer.elapsedTime();
+}
+
+bool Foam::mpmModel::logThisStep() const
+{
+    return steps_ % controls_.logInterval == 0;
+}
+
+void Foam::mpmModel::report(Ostream& os)
+{
+    const mpm::Particles& P = system_.particles();
+    scalar ke = 0, se = 0, vmax = 0, mass = 0;
+    vector mom(Zero);
+    for (mpm::Index p = 0; p < P.size(); ++p)
+    {
+        const vector v(P.v[0][p], P.v[1][p], P.v[2][p]);
+        ke += 0.5*P.mass[p]*magSqr(v);
+        mom += P.mass[p]*v;
+        mass += P.mass[p];
+        vmax = max(vmax, magSqr(v));
+        // Small-strain elastic energy: eps = sym(F) - I
+        const scalar exx = P.F[0][p] - 1, eyy = P.F[4][p] - 1, ezz = P.F[8][p] - 1;
+        const scalar exy = 0.5*(P.F[1][p] + P.F[3][p]);
+        const scalar eyz = 0.5*(P.F[5][p] + P.F[7][p]);
+        const scalar exz = 0.5*(P.F[2][p] + P.F[6][p]);
+        se += 0.5*P.volume[p]*
+        (
+            P.sigma[mpm::XX][p]*exx + P.sigma[mpm::YY][p]*eyy + P.sigma[mpm::ZZ][p]*ezz
+          + 2*(P.sigma[mpm::XY][p]*exy + P.sigma[mpm::YZ][p]*eyz + P.sigma[mpm::XZ][p]*exz)
+        );
+    }
+    const vector vcm(mass > 0 ? mom/mass : vector(Zero));
+    os  << "MPM: step " << label(system_.stepCount()) << ", kinetic energy "
+        << ke << ", elastic energy " << se << ", max |U| "
+        << Foam::sqrt(vmax) << nl;
+
+    if (!summaryFile_.valid())
+    {
+        const fileName dir
+        (
+            mesh_.time().globalPath()/"postProcessing"/"mpmSummary"
+           /mesh_.time().timeName(mesh_.time().startTime().value())
+        );
+        mkDir(dir);
+        summaryFile_.reset(new OFstream(dir/"summary.dat"));
+        summaryFile_()
+            << "# time kineticEnergy elasticEnergy Ucm_x Ucm_y Ucm_z maxU" << nl;
+    }
+    summaryFile_().precision(12);
+    summaryFile_()
+        << mesh_.time().value() << ' ' << ke << ' ' << se << ' '
+        << vcm.x() << ' ' << vcm.y() << ' ' << vcm.z() << ' '
+        << Foam::sqrt(vmax) << endl;
+}
+
+void Foam::mpmModel::summary(Ostream& os) const
+{
+    const mpm::StepTimers& t = system_.timers();
+    const scalar total = t.total() + ioTime_;
+    auto line = [&](const char* name, scalar s)
+    {
+        os  << "    " << name << tab << s << " s" << tab
+            << (total > 0 ? 100*s/total : 0) << " %" << nl;
+    };
+    os  << nl << "MPM summary: " << label(system_.particles().size())
+        << " material points, " << steps_ << " steps";
+    if (steps_ > 0 && t.total() > 0)
+    {
+        os  << ", " << system_.particles().size()*scalar(steps_)/t.total()/1e6
+            << " M point-steps/s";
+    }
+    os  << nl << "  Cost breakdown:" << nl;
+    line("P2G          ", t.p2g);
+    line("nodal update ", t.nodal);
+    line("G2P          ", t.g2p);
+    line("constitutive ", t.constitutive);
+    line("I/O          ", ioTime_);
+    os  << endl;
+}

@@ -1,0 +1,188 @@
+#include "pointSeeder.H"
+#include "searchableSurface.H"
+#include "volumeType.H"
+#include "Time.H"
+#include "symmTensor.H"
+#include "choice.H"
+
+namespace
+{
+
+using namespace Foam;
+
+word geometryType(const word& t)
+{
+    if (t == "box") return "searchableBox";
+    if (t == "cylinder") return "searchableCylinder";
+    if (t == "sphere") return "searchableSphere";
+    if (t == "stl") return "triSurfaceMesh";
+    return t;
+}
+
+// Initial velocity at x for a region's velocity dictionary.
+class velocityField
+{
+    word type_;
+    vector value_, amplitude_, wavenumber_;
+    scalar phase_ = 0;
+
+public:
+    explicit velocityField(const dictionary& d)
+    :
+        type_(d.getOrDefault<word>("type", "uniform")),
+        value_(Zero), amplitude_(Zero), wavenumber_(Zero)
+    {
+        if (type_ == "uniform")
+        {
+            value_ = d.getOrDefault<vector>("value", Zero);
+        }
+        else if (type_ == "sine")
+        {
+            amplitude_ = d.get<vector>("amplitude");
+            wavenumber_ = d.get<vector>("wavenumber");
+            phase_ = d.getOrDefault<scalar>("phase", 0);
+        }
+        else
+        {
+            FatalIOErrorInFunction(d)
+                << "Unknown velocity type '" << type_ << "'" << nl
+                << "Valid velocity types: uniform sine" << exit(FatalIOError);
+        }
+    }
+
+    vector operator()(const point& x) const
+    {
+        return type_ == "uniform"
+            ? value_
+            : amplitude_*std::sin((wavenumber_ & x) + phase_);
+    }
+};
+
+} // namespace
+
+Foam::label Foam::seedRegions
+(
+    const fvMesh& mesh,
+    const meshLattice& ml,
+    const materialLibrary& materials,
+    const dictionary& regions,
+    mpm::Particles& points
+)
+{
+    const mpm::Lattice& L = ml.lattice();
+    const label n0 = points.size();
+
+    for (const entry& e : regions)
+    {
+        if (!e.isDict()) continue;
+        const dictionary& d = e.dict();
+        const word name(e.keyword());
+        Info<< "Region " << name << nl;
+
+        dictionary geomDict(d);
+        geomDict.set("type", geometryType(d.get<word>("type")));
+        autoPtr<searchableSurface> surf = searchableSurface::New
+        (
+            geomDict.get<word>("type"),
+            IOobject(d.getOrDefault<word>("file", name), mesh.time().constant(),
+                "triSurface", mesh.time(), IOobject::MUST_READ, IOobject::NO_WRITE),
+            geomDict
+        );
+
+        // Points of a region reaching outside the mesh would be lost.
+        const boundBox rb(surf->bounds());
+        const scalar tol = 1e-9*L.h;
+        for (direction a = 0; a < 3; ++a)
+        {
+            if (!L.solved[a]) continue;
+            if (rb.min()[a] < L.origin[a] - tol || rb.max()[a] > L.origin[a] + L.length(a) + tol)
+            {
+                FatalIOErrorInFunction(d)
+                    << "Region " << name << " " << rb << " reaches outside "
+                    << "the mesh (direction " << label(a) << ", mesh from "
+                    << L.origin[a] << " to " << L.origin[a] + L.length(a)
+                    << "): points would be seeded outside the mesh." << nl
+                    << "Shrink the region or enlarge the mesh."
+                    << exit(FatalIOError);
+            }
+        }
+
+        const label mat = materials.index(d.get<word>("material"), d);
+        Vector<label> ppc(1, 1, 1);
+        const entry* pe = d.findEntry("pointsPerCell", keyType::LITERAL);
+        if (!pe)
+        {
+            FatalIOErrorInFunction(d)
+                << "Missing keyword pointsPerCell (a count per direction, "
+                << "e.g. 2 or (2 2 1))" << exit(FatalIOError);
+        }
+        if (pe->stream()[0].isPunctuation()) ppc = d.get<Vector<label>>("pointsPerCell");
+        else ppc = Vector<label>::uniform(d.get<label>("pointsPerCell"));
+        for (direction a = 0; a < 3; ++a)
+        {
+            if (!L.solved[a]) ppc[a] = 1;
+            if (ppc[a] < 1 || ppc[a] > 10)
+            {
+                FatalIOErrorInFunction(d)
+                    << "pointsPerCell " << ppc << " must be between 1 and 10"
+                    << exit(FatalIOError);
+            }
+        }
+        const velocityField velocity(d.subOrEmptyDict("velocity"));
+        const symmTensor sigma0(d.getOrDefault<symmTensor>("stress", Zero));
+        const scalar rho = materials.rho(mat);
+
+        // Candidate points: a regular sub-lattice in every cell.
+        const label perCell = ppc.x()*ppc.y()*ppc.z();
+        pointField candidates(mesh.nCells()*perCell);
+        scalarField cellVol(candidates.size());
+        label c = 0;
+        forAll(mesh.cellCentres(), celli)
+        {
+            const point& cc = mesh.cellCentres()[celli];
+            for (label k = 0; k < ppc.z(); ++k)
+            for (label j = 0; j < ppc.y(); ++j)
+            for (label i = 0; i < ppc.x(); ++i)
+            {
+                const label idx[3] = {i, j, k};
+                point x(cc);
+                for (direction a = 0; a < 3; ++a)
+                {
+                    if (L.solved[a]) x[a] += ((idx[a] + 0.5)/ppc[a] - 0.5)*L.h;
+                }
+                cellVol[c] = mesh.cellVolumes()[celli]/perCell;
+                candidates[c++] = x;
+            }
+        }
+        List<volumeType> inside;
+        surf->getVolumeType(candidates, inside);
+
+        label added = 0;
+        forAll(candidates, i)
+        {
+            if (inside[i] != volumeType::INSIDE) continue;
+            const point& x = candidates[i];
+            const vector v(velocity(x));
+            const mpm::Index p = points.add
+            (
+                {x.x(), x.y(), x.z()}, {v.x(), v.y(), v.z()},
+                rho*cellVol[i], cellVol[i], int(mat)
+            );
+            points.sigma[mpm::XX][p] = sigma0.xx();
+            points.sigma[mpm::YY][p] = sigma0.yy();
+            points.sigma[mpm::ZZ][p] = sigma0.zz();
+            points.sigma[mpm::XY][p] = sigma0.xy();
+            points.sigma[mpm::YZ][p] = sigma0.yz();
+            points.sigma[mpm::XZ][p] = sigma0.xz();
+            ++added;
+        }
+        Info<< "    " << added << " points of material "
+            << materials.names()[mat] << ", " << ppc << " per cell" << nl;
+        if (added == 0)
+        {
+            WarningInFunction << "Region " << name << " contains no points" << nl;
+        }
+    }
+    for (label p = n0; p < points.size(); ++p) points.id[p] = p;
+    return points.size() - n0;
+}
