@@ -39,7 +39,7 @@ Totals gridTotals(const MpmSystem& s)
     return t;
 }
 
-MpmSystem periodicSystem(ShapeKind shape, int dim, Transfer transfer = Transfer::picFlip, Real alpha = 0)
+MpmSystem periodicSystem(ShapeKind shape, int dim, Transfer transfer = Transfer::picFlip, Real alpha = 0, Index nPoints = 2000)
 {
     MpmSystem s;
     BoundarySpec b;
@@ -48,7 +48,7 @@ MpmSystem periodicSystem(ShapeKind shape, int dim, Transfer transfer = Transfer:
     o.shape = shape; o.flipRatio = alpha; o.transfer = transfer;
     s.setup(box(12, dim > 1 ? 9 : 1, dim > 2 ? 8 : 1), b, o);
     s.materials().push_back(std::make_unique<NoStress>());
-    seedRandom(s, 2000, 0.0, 1.0);
+    seedRandom(s, nPoints, 0.0, 1.0);
     return s;
 }
 
@@ -147,17 +147,25 @@ TEST(Transfer, APICPreservesAffineField)
 TEST(Transfer, ThreadCountIndependent)
 {
     // Colour-blocked P2G sums each node in a fixed order, so 1 and 2
-    // threads give bitwise-identical points.
+    // threads give bitwise-identical points. 20000 points: well above the
+    // size below which loops run serially (worthThreads), so 2 threads do
+    // run in parallel; consistent mass and APIC exercise every kernel.
     for (auto shape : allShapes)
+    for (auto transfer : {Transfer::picFlip, Transfer::apic})
     {
         std::array<std::vector<Real>, 3> xs[2], vs[2];
+        std::array<std::vector<Real>, 6> sig[2];
         for (int run = 0; run < 2; ++run)
         {
             omp_set_num_threads(run + 1);
-            MpmSystem s = periodicSystem(shape, 3, Transfer::picFlip, 0.9);
-            s.materials()[0] = std::make_unique<NoStress>();
+            MpmSystem s = periodicSystem(shape, 3, transfer, 0.9, 20000);
+            // A real stress, so the force scatter sums non-zero terms.
+            s.materials()[0] = makeLaw("linearElastic", {{"rho", 1}, {"E", 10}, {"nu", 0.3}});
+            StepOptions o = s.options();
+            o.massMatrix = transfer == Transfer::apic ? MassMatrix::consistent : MassMatrix::lumped;
+            s.setup(s.lattice(), BoundarySpec{{WallCondition{WallType::periodic, 0}}, {}}, o);
             for (int n = 0; n < 5; ++n) s.step(2e-3);
-            xs[run] = s.particles().x; vs[run] = s.particles().v;
+            xs[run] = s.particles().x; vs[run] = s.particles().v; sig[run] = s.particles().sigma;
         }
         omp_set_num_threads(2);
         for (int d = 0; d < 3; ++d)
@@ -165,6 +173,8 @@ TEST(Transfer, ThreadCountIndependent)
             EXPECT_EQ(xs[0][d], xs[1][d]) << shapeName(shape);
             EXPECT_EQ(vs[0][d], vs[1][d]) << shapeName(shape);
         }
+        for (int c = 0; c < 6; ++c) EXPECT_EQ(sig[0][c], sig[1][c]) << shapeName(shape);
+        EXPECT_GT(std::abs(sig[0][XY][17]), 0.0);
     }
 }
 

@@ -33,6 +33,10 @@ void MpmSystem::dispatch(Fn&& f)
     });
 }
 
+// Below this many work items a parallel region costs more than it saves
+// (and under load a barrier can cost a scheduler time slice).
+static inline bool worthThreads(Index n) { return n >= 4096; }
+
 // Runs fn(p) for every point, blocks of one colour in parallel, so that fn
 // may scatter to its stencil's nodes with plain stores (transfer/binning.hpp).
 template<class Fn>
@@ -42,7 +46,7 @@ void MpmSystem::forEachPointColoured(Fn&& fn) const
     for (int c = 0; c < binning_.nColours(); ++c)
     {
         const Index k0 = binning_.colourBegin(c), k1 = binning_.colourBegin(c + 1);
-        #pragma omp parallel for schedule(dynamic, 1)
+        #pragma omp parallel for schedule(dynamic, 1) if(worthThreads(Index(order.size())))
         for (Index key = k0; key < k1; ++key)
         {
             for (Index q = binning_.start(key); q < binning_.start(key + 1); ++q)
@@ -217,7 +221,7 @@ void MpmSystem::addGravity()
 {
     const auto& gr = options_.gravity;
     const Index n = lattice_.nNodes;
-    #pragma omp parallel for
+    #pragma omp parallel for if(worthThreads(n))
     for (Index I = 0; I < n; ++I)
     {
         const Real m = grid_.mass[I];
@@ -271,7 +275,7 @@ void MpmSystem::nodalVelocity(std::array<std::vector<Real>, 3>& v) const
 {
     const Index n = lattice_.nNodes;
     const Real tol = massTolerance_;
-    #pragma omp parallel for
+    #pragma omp parallel for if(worthThreads(n))
     for (Index I = 0; I < n; ++I)
     {
         const Real m = grid_.mass[I];
@@ -293,7 +297,7 @@ void MpmSystem::nodalUpdate(Real dt)
     const Index n = lattice_.nNodes;
     auto& g = grid_;
     for (auto& a : nodeRhs_) a.resize(n);
-    #pragma omp parallel for
+    #pragma omp parallel for if(worthThreads(n))
     for (Index I = 0; I < n; ++I)
     {
         for (int d = 0; d < 3; ++d) nodeRhs_[d][I] = g.momentum[d][I] + dt*g.force[d][I];
@@ -314,7 +318,7 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
     const Index nNodes = lattice_.nNodes;
     const Real tol = massTolerance_;
     const auto& m = grid_.mass;
-    #pragma omp parallel for
+    #pragma omp parallel for if(worthThreads(nNodes))
     for (Index I = 0; I < nNodes; ++I)
     {
         const Real inv = m[I] > tol ? 1.0/m[I] : 0.0;
@@ -331,7 +335,7 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
     Real* Mx[3] = {nodeScratch_[0].data(), nodeScratch_[1].data(), nodeScratch_[2].data()};
     for (int sweep = 0; sweep < options_.consistentMassIterations; ++sweep)
     {
-        #pragma omp parallel for schedule(static)
+        #pragma omp parallel for schedule(static) if(worthThreads(nPoints))
         for (Index p = 0; p < nPoints; ++p)
         {
             Stencil<K, D> s;
@@ -355,7 +359,7 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
             });
         });
         foldVector(nodeScratch_);
-        #pragma omp parallel for
+        #pragma omp parallel for if(worthThreads(nNodes))
         for (Index I = 0; I < nNodes; ++I)
         {
             const Real inv = m[I] > tol ? 1.0/m[I] : 0.0;
@@ -397,7 +401,7 @@ void MpmSystem::gather(Real dt)
     const Real* vn[3] = {grid_.velocity[0].data(), grid_.velocity[1].data(), grid_.velocity[2].data()};
     const Real* vo[3] = {grid_.velocityOld[0].data(), grid_.velocityOld[1].data(), grid_.velocityOld[2].data()};
 
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         Stencil<K, D> s;
@@ -446,7 +450,7 @@ void MpmSystem::gradientFromGrid(const std::array<std::vector<Real>, 3>& v)
     const auto& P = particles_;
     const Lattice& L = lattice_;
     const Index n = P.size();
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         Stencil<K, D> s;
@@ -466,7 +470,7 @@ void MpmSystem::updateStress(Real dt)
     auto& P = particles_;
     const Index n = P.size();
     Index firstBad = n;
-    #pragma omp parallel for schedule(static) reduction(min:firstBad)
+    #pragma omp parallel for schedule(static) reduction(min:firstBad) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         Real Lp[9], Fo[9], Fn[9], sig[6];
@@ -511,7 +515,7 @@ void MpmSystem::movePoints(Real dt)
     const Index n = P.size();
     Index firstBad = n;
     const bool frozen = options_.freezePositions;
-    #pragma omp parallel for schedule(static) reduction(min:firstBad)
+    #pragma omp parallel for schedule(static) reduction(min:firstBad) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         for (int a = 0; a < 3; ++a)
@@ -548,7 +552,7 @@ Real MpmSystem::maxSignalSpeed() const
     const auto& P = particles_;
     const Index n = P.size();
     Real cmax = 0;
-    #pragma omp parallel for reduction(max:cmax)
+    #pragma omp parallel for reduction(max:cmax) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         const Real v2 = P.v[0][p]*P.v[0][p] + P.v[1][p]*P.v[1][p] + P.v[2][p]*P.v[2][p];

@@ -3,6 +3,7 @@
 #include "materialPointsIO.H"
 #include "Time.H"
 #include "clockTime.H"
+#include "floatingPointTraps.H"
 #include <omp.h>
 
 Foam::mpmModel::mpmModel(const fvMesh& mesh)
@@ -30,6 +31,7 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     )
 {
     lattice_.report(Info);
+    suspendPoolThreadTraps();
     system_.setup(lattice_.lattice(), readWallConditions(mesh, lattice_, dict_), controls_.step);
     for (label m = 0; m < materials_.size(); ++m)
     {
@@ -65,11 +67,22 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
 Foam::scalar Foam::mpmModel::deltaT() const
 {
     if (!controls_.adaptive) return mesh_.time().deltaTValue();
-    return min(system_.stableDeltaT(controls_.courant), controls_.maxDeltaT);
+    const floatingPointTrapsOff noTraps;
+    const scalar dt = min(system_.stableDeltaT(controls_.courant), controls_.maxDeltaT);
+    if (!std::isfinite(dt) || dt <= 0)
+    {
+        FatalErrorInFunction
+            << "Stopping at time " << mesh_.time().timeName()
+            << ": the stable time step is " << dt << " (signal speed "
+            << system_.maxSignalSpeed() << "); the material points' velocity"
+            << " or stress is no longer finite" << exit(FatalError);
+    }
+    return dt;
 }
 
 Foam::scalar Foam::mpmModel::courantNumber(scalar dt) const
 {
+    const floatingPointTrapsOff noTraps;
     return system_.maxSignalSpeed()*dt/lattice_.lattice().h;
 }
 
@@ -77,6 +90,7 @@ void Foam::mpmModel::evolve(scalar dt)
 {
     try
     {
+        const floatingPointTrapsOff noTraps;
         system_.step(dt);
     }
     catch (const mpm::NonFiniteError& e)
@@ -124,6 +138,7 @@ bool Foam::mpmModel::logThisStep() const
 
 void Foam::mpmModel::report(Ostream& os)
 {
+    const floatingPointTrapsOff noTraps;
     const mpm::Particles& P = system_.particles();
     scalar ke = 0, se = 0, vmax = 0, mass = 0;
     vector mom(Zero);

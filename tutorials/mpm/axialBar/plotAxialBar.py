@@ -19,6 +19,26 @@ def exact_vcm(t):
     return 2*V0/np.pi*np.cos(w1*t)
 
 
+def fit_frequency(t, v, w_guess):
+    """Least-squares fit of v = a cos(w t) + b sin(w t): returns w. The
+    residual is scanned around the guess, then refined by golden section."""
+    def residual(w):
+        A = np.c_[np.cos(w*t), np.sin(w*t)]
+        c = np.linalg.lstsq(A, v, rcond=None)[0]
+        return np.sum((A @ c - v)**2)
+    ws = np.linspace(0.95*w_guess, 1.05*w_guess, 401)
+    k = int(np.argmin([residual(w) for w in ws]))
+    lo, hi = ws[max(k - 1, 0)], ws[min(k + 1, len(ws) - 1)]
+    g = (np.sqrt(5) - 1)/2
+    for _ in range(60):
+        a, b = hi - g*(hi - lo), lo + g*(hi - lo)
+        if residual(a) < residual(b):
+            hi = b
+        else:
+            lo = a
+    return 0.5*(lo + hi)
+
+
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     case = args[0] if args else "."
@@ -29,6 +49,9 @@ def main():
     print(f"axialBar: t = {t[0]:g} .. {t[-1]:g}, {len(t)} samples")
     print(f"axialBar: max |v_cm - exact| / (2 V0/pi) = {err.max():.6e}")
     print(f"axialBar: rms |v_cm - exact| / (2 V0/pi) = {np.sqrt(np.mean(err**2)):.6e}")
+    w1 = np.pi/(2*L)*np.sqrt(E/RHO)
+    w = fit_frequency(t, v, w1)
+    print(f"axialBar: fitted w1 = {w:.8f}, exact {w1:.8f}, relative frequency error = {w/w1 - 1:.6e}")
     if "--no-plot" in sys.argv:
         return
     import matplotlib
