@@ -69,8 +69,10 @@ int main(int argc, char** argv)
     utsname u; uname(&u);
     std::printf("# particleThroughput: 3D elastic block of %d^3 cells in a %d^3 lattice, 8 points/cell\n",
                 n, n + 8);
-    std::printf("# machine: %s, %ld cores, %s %s\n", cpuModel().c_str(), sysconf(_SC_NPROCESSORS_ONLN),
-                u.sysname, u.release);
+    double load[3] = {0, 0, 0};
+    if (getloadavg(load, 3) < 0) load[0] = -1;
+    std::printf("# machine: %s, %ld cores, %s %s, load average %.2f (other work skews 2-thread runs most)\n",
+                cpuModel().c_str(), sysconf(_SC_NPROCESSORS_ONLN), u.sysname, u.release, load[0]);
     std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s\n", "shape", "threads", "points",
                 "ms/step", "Mpoint-step/s", "P2G%", "nodal%", "G2P%", "stress%");
     const int maxThreads = omp_get_num_procs() < 2 ? 1 : 2;

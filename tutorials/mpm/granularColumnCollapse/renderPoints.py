@@ -1,0 +1,107 @@
+# pvbatch script: renders the material points of the granular column at the
+# last write time, coloured by the equivalent plastic strain, with the domain
+# outline and the initial column, to granularColumnCollapse_points.png.
+#
+#     xvfb-run -a pvbatch renderPoints.py [case]
+#
+# Uses ParaView's built-in OpenFOAM reader on an (empty) case.foam file; the
+# cloud needs "Lagrangianpositionswithoutextradata" since mpmFoam writes
+# positions without the barycentric extra data.
+import os
+import sys
+
+from paraview.simple import (
+    ColorBy, CreateView, GetColorTransferFunction, GetScalarBar, Line,
+    MergeBlocks, OpenFOAMReader, Render, SaveScreenshot, Show, Text,
+    UpdatePipeline,
+)
+
+A0, H0 = 0.2, 0.4       # initial column [m]
+L, H = 1.0, 0.5         # domain [m]
+
+case = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__)))
+foam = os.path.join(case, "case.foam")
+if not os.path.exists(foam):
+    open(foam, "w").close()
+
+reader = OpenFOAMReader(FileName=foam)
+reader.Lagrangianpositionswithoutextradata = 1
+reader.MeshRegions = ["lagrangian/materialPoints"]
+reader.LagrangianArrays = ["plasticStrain", "U", "mass"]
+reader.UpdatePipelineInformation()
+times = list(reader.TimestepValues) if reader.TimestepValues else [0.0]
+tEnd = max(times)
+UpdatePipeline(time=tEnd, proxy=reader)
+points = MergeBlocks(Input=reader)
+UpdatePipeline(time=tEnd, proxy=points)
+n = points.GetDataInformation().GetNumberOfPoints()
+if n == 0:
+    sys.exit("renderPoints.py: no material points read at t = %g" % tEnd)
+
+view = CreateView("RenderView")
+view.ViewSize = [1600, 860]
+view.ViewTime = tEnd
+view.Background = [1, 1, 1]
+try:
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+view.OrientationAxesVisibility = 0
+
+disp = Show(points, view)
+disp.SetRepresentationType("Points")
+disp.PointSize = 6
+disp.RenderPointsAsSpheres = 1
+ColorBy(disp, ("POINTS", "plasticStrain"))
+lut = GetColorTransferFunction("plasticStrain")
+lut.ApplyPreset("Viridis (matplotlib)", True)
+rng = points.PointData["plasticStrain"].GetRange()
+lut.RescaleTransferFunction(0.0, max(rng[1], 1e-12))
+bar = GetScalarBar(lut, view)
+bar.Title = "equivalent plastic strain"
+bar.ComponentTitle = ""
+bar.TitleColor = [0, 0, 0]
+bar.LabelColor = [0, 0, 0]
+bar.TitleFontSize = 20
+bar.LabelFontSize = 18
+bar.RangeLabelFormat = "%.1f"
+bar.Orientation = "Horizontal"
+bar.WindowLocation = "Any Location"
+bar.Position = [0.58, 0.62]
+bar.ScalarBarLength = 0.35
+disp.SetScalarBarVisibility(view, True)
+
+
+def segment(p1, p2, color, width):
+    line = Line(Point1=p1, Point2=p2)
+    d = Show(line, view)
+    d.AmbientColor = color
+    d.DiffuseColor = color
+    d.LineWidth = width
+    d.ColorArrayName = ["POINTS", ""]
+
+
+z = 0.02       # in front of the points (z in [0, 0.01])
+for p1, p2 in [((0, 0, z), (L, 0, z)), ((L, 0, z), (L, H, z)),
+               ((L, H, z), (0, H, z)), ((0, H, z), (0, 0, z))]:
+    segment(p1, p2, [0, 0, 0], 3)
+for p1, p2 in [((0, H0, z), (A0, H0, z)), ((A0, H0, z), (A0, 0, z))]:
+    segment(p1, p2, [0.8, 0.1, 0.1], 3)
+
+title = Text(Text="Granular column collapse (Drucker-Prager, phi = 30 deg): "
+                  "%d material points at t = %g s; red: initial column" % (n, tEnd))
+td = Show(title, view)
+td.Color = [0, 0, 0]
+td.FontSize = 22
+td.WindowLocation = "Upper Center"
+
+Render(view)        # the first render resets the camera: set it afterwards
+view.CameraPosition = [L/2, H/2, 5]
+view.CameraFocalPoint = [L/2, H/2, 0]
+view.CameraViewUp = [0, 1, 0]
+view.CameraParallelProjection = 1
+view.CameraParallelScale = 0.3
+Render(view)
+out = os.path.join(case, "granularColumnCollapse_points.png")
+SaveScreenshot(out, view, ImageResolution=[1600, 860])
+print("Wrote %s (%d points, t = %g s)" % (out, n, tEnd))
