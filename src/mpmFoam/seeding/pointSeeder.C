@@ -128,6 +128,20 @@ Foam::label Foam::seedRegions
                     << exit(FatalIOError);
             }
         }
+        // Shift of the sub-cell pattern, as a fraction of a cell: lets
+        // analysis runs place points anywhere relative to the lattice nodes
+        // (which sit at cell centres).
+        const vector shift(d.getOrDefault<vector>("offset", Zero));
+        for (direction a = 0; a < 3; ++a)
+        {
+            if (shift[a] <= -0.5 || shift[a] >= 0.5)
+            {
+                FatalIOErrorInFunction(d)
+                    << "offset " << shift << " must lie in (-0.5, 0.5) in "
+                    << "every direction (fraction of a cell)"
+                    << exit(FatalIOError);
+            }
+        }
         const velocityField velocity(d.subOrEmptyDict("velocity"));
         const symmTensor sigma0(d.getOrDefault<symmTensor>("stress", Zero));
         const scalar rho = materials.rho(mat);
@@ -148,7 +162,7 @@ Foam::label Foam::seedRegions
                 point x(cc);
                 for (direction a = 0; a < 3; ++a)
                 {
-                    if (L.solved[a]) x[a] += ((idx[a] + 0.5)/ppc[a] - 0.5)*L.h;
+                    if (L.solved[a]) x[a] += ((idx[a] + 0.5)/ppc[a] - 0.5 + shift[a])*L.h;
                 }
                 cellVol[c] = mesh.cellVolumes()[celli]/perCell;
                 candidates[c++] = x;
