@@ -477,3 +477,38 @@ TEST(ConstitutiveLawRegistry, BadParametersAreNamed)
     expectInvalidMentioning([] { makeLaw("linearElastic", {{"rho", std::nan("")}, {"E", 1}, {"nu", 0.2}}); },
         {"'rho'"});
 }
+
+// Stored energy used by the energy diagnostics: consistent with each law's
+// stress (dW/dF = P for the hyperelastic law, -p for the fluid, sigma^2/2E
+// for uniaxial stress in the hypoelastic ones).
+TEST(ConstitutiveStoredEnergy, ConsistentWithStress)
+{
+    const Real I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    {
+        auto law = makeLaw("linearElastic", {{"rho", 1}, {"E", 200}, {"nu", 0.25}});
+        const Real sigma[6] = {3.0, 0, 0, 0, 0, 0};
+        EXPECT_NEAR(law->storedEnergy(sigma, I), 9.0/(2*200), 1e-14);
+        auto dp = makeLaw("druckerPrager", {{"rho", 1}, {"E", 200}, {"nu", 0.25}, {"phi", 30}});
+        EXPECT_NEAR(dp->storedEnergy(sigma, I), 9.0/(2*200), 1e-14);
+    }
+    {
+        auto law = makeLaw("neoHookean", {{"rho", 1}, {"E", 100}, {"nu", 0.3}});
+        auto W = [&](Real l) { const Real F[9] = {l, 0, 0, 0, 1, 0, 0, 0, 1}; return law->storedEnergy(nullptr, F); };
+        const Real l = 1.2, e = 1e-6;
+        const Real F[9] = {l, 0, 0, 0, 1, 0, 0, 0, 1}, L0[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+        Real sig[6] = {0, 0, 0, 0, 0, 0}, ep = 0;
+        PointKinematics k{L0, I, F, 0.0};
+        PointStress s{sig, &ep};
+        law->updateStress(k, s);
+        // P_11 = J sigma_11 / l with J = l
+        EXPECT_NEAR((W(l + e) - W(l - e))/(2*e), sig[XX], 1e-6);
+        EXPECT_NEAR(W(1.0), 0.0, 1e-15);
+    }
+    {
+        auto law = makeLaw("newtonianFluid", {{"rho", 1}, {"K", 10}, {"gamma", 7}, {"mu", 0}});
+        auto W = [&](Real J) { const Real F[9] = {J, 0, 0, 0, 1, 0, 0, 0, 1}; return law->storedEnergy(nullptr, F); };
+        const Real J = 0.95, e = 1e-6;
+        const Real p = 10*(std::pow(J, -7.0) - 1);
+        EXPECT_NEAR((W(J + e) - W(J - e))/(2*e), -p, 1e-5);
+    }
+}

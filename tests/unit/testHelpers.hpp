@@ -13,6 +13,7 @@ public:
     const char* typeName() const override { return "noStress"; }
     void updateStress(const PointKinematics&, PointStress&) const override {}
     Real waveSpeed(Real) const override { return c_; }
+    Real storedEnergy(const Real*, const Real*) const override { return 0; }
 private:
     Real c_;
 };

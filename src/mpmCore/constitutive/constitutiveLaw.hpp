@@ -72,6 +72,12 @@ public:
     // +infinity when the law has none.
     virtual Real maxStableDt(Real h) const;
 
+    // Stored (recoverable) elastic energy per unit reference volume, for
+    // energy diagnostics: the strain energy of hyperelastic laws, the
+    // complementary energy sigma:C^-1:sigma/2 (times J) of hypoelastic and
+    // elastoplastic laws, the compression energy of the fluid.
+    virtual Real storedEnergy(const Real* sigma, const Real* F) const = 0;
+
     // Reference (initial) density.
     Real rho0() const { return rho0_; }
 

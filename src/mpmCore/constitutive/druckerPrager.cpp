@@ -124,4 +124,9 @@ Real DruckerPrager::waveSpeed(Real) const
     return std::sqrt(el_.pWaveModulus()/rho0_);
 }
 
+Real DruckerPrager::storedEnergy(const Real* sigma, const Real* F) const
+{
+    return el_.complementaryEnergy(sigma)*tensor::det(F);
+}
+
 } // namespace mpm

@@ -48,6 +48,8 @@ public:
     Real eta() const { return eta_; }
     Real xi() const { return xi_; }
     Real etaBar() const { return etaBar_; }
+    Real storedEnergy(const Real* sigma, const Real* F) const override;
+
     const IsotropicElasticity& elasticity() const { return el_; }
 
     // Plane-strain Mohr-Coulomb match, eta(phi) (= xi(phi) tan(phi)).

@@ -55,4 +55,17 @@ Real LinearElastic::waveSpeed(Real) const
     return std::sqrt(el_.pWaveModulus()/rho0_);
 }
 
+Real IsotropicElasticity::complementaryEnergy(const Real* s) const
+{
+    const Real tr = s[XX] + s[YY] + s[ZZ];
+    const Real ss = s[XX]*s[XX] + s[YY]*s[YY] + s[ZZ]*s[ZZ]
+                  + 2.0*(s[XY]*s[XY] + s[YZ]*s[YZ] + s[XZ]*s[XZ]);
+    return (ss - lambda/(3.0*lambda + 2.0*mu)*tr*tr)/(4.0*mu);
+}
+
+Real LinearElastic::storedEnergy(const Real* sigma, const Real* F) const
+{
+    return el_.complementaryEnergy(sigma)*tensor::det(F);
+}
+
 } // namespace mpm

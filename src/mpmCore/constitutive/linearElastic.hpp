@@ -23,6 +23,9 @@ struct IsotropicElasticity
     static IsotropicElasticity fromYoungPoisson(Real E, Real nu);
     Real bulkModulus() const { return lambda + 2.0*mu/3.0; }
     Real pWaveModulus() const { return lambda + 2.0*mu; }
+
+    // sigma : C^-1 : sigma / 2 per unit current volume.
+    Real complementaryEnergy(const Real* sigma) const;
 };
 
 // Objective (Jaumann-rate) hypoelastic update of sigma (6 components, in
@@ -40,6 +43,8 @@ public:
     // Dilatational wave speed sqrt((lambda + 2 mu)/rho0); J is ignored
     // because the hypoelastic tangent does not depend on the deformation.
     Real waveSpeed(Real J) const override;
+
+    Real storedEnergy(const Real* sigma, const Real* F) const override;
 
     const IsotropicElasticity& elasticity() const { return el_; }
 

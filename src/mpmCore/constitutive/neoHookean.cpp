@@ -35,4 +35,12 @@ Real NeoHookean::waveSpeed(Real J) const
     return std::sqrt(std::max(reference, current)/rho0_);
 }
 
+Real NeoHookean::storedEnergy(const Real*, const Real* F) const
+{
+    Real I1 = 0;
+    for (int e = 0; e < 9; ++e) I1 += F[e]*F[e];
+    const Real lnJ = std::log(tensor::det(F));
+    return 0.5*el_.mu*(I1 - 3.0) - el_.mu*lnJ + 0.5*el_.lambda*lnJ*lnJ;
+}
+
 } // namespace mpm

@@ -26,6 +26,9 @@ public:
     // so the CFL bound is not relaxed in tension.
     Real waveSpeed(Real J) const override;
 
+    // W = mu/2 (tr(F F^T) - 3) - mu ln J + lambda/2 (ln J)^2
+    Real storedEnergy(const Real* sigma, const Real* F) const override;
+
     const IsotropicElasticity& elasticity() const { return el_; }
 
 private:

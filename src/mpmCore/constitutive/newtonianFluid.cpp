@@ -43,4 +43,11 @@ Real NewtonianFluid::maxStableDt(Real h) const
     return rho0_*h*h/(8.0*mu_);
 }
 
+Real NewtonianFluid::storedEnergy(const Real*, const Real* F) const
+{
+    const Real J = tensor::det(F);
+    if (std::abs(gamma_ - 1.0) < 1e-9) return K_*(J - 1.0 - std::log(J));
+    return K_*((std::pow(J, 1.0 - gamma_) - 1.0)/(gamma_ - 1.0) + J - 1.0);
+}
+
 } // namespace mpm

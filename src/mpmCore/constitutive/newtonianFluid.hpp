@@ -34,6 +34,9 @@ public:
     // dt <= 2 rho h^2/((4/3) mu 12) = rho h^2/(8 mu).
     Real maxStableDt(Real h) const override;
 
+    // Compression energy -int_1^J p dJ = K ((J^(1-gamma) - 1)/(gamma - 1) + J - 1)
+    Real storedEnergy(const Real* sigma, const Real* F) const override;
+
 private:
     Real K_, gamma_, mu_;
 };

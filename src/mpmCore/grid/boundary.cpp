@@ -67,6 +67,8 @@ void Boundary::build(const Lattice& L, const BoundarySpec& spec)
         int r[3] = {i - L.padOf(0), j - L.padOf(1), k - L.padOf(2)};
         bool isGhost = false;
         std::array<Real, 3> sign{1, 1, 1};
+        int reflections = 0, unilateralAxis = -1;
+        Real outward = 0;
         for (int a = 0; a < 3; ++a)
         {
             const int n = L.nCells[a];
@@ -87,13 +89,20 @@ void Boundary::build(const Lattice& L, const BoundarySpec& spec)
             else
             {
                 r[a] = low ? -1 - r[a] : 2*n - 1 - r[a];
+                ++reflections;
                 if (wc.type == WallType::noSlip) { for (auto& s : sign) s = -s; }
-                else { sign[a] = -sign[a]; }
+                else { sign[a] = -sign[a]; unilateralAxis = a; outward = low ? -1 : 1; }
             }
         }
         if (isGhost)
         {
-            ghosts_.push_back({L.node(i, j, k), L.realNode(r[0], r[1], r[2]), sign});
+            // Corner ghosts (two or more reflections) stay bilateral.
+            if (reflections != 1) unilateralAxis = -1;
+            ghosts_.push_back
+            (
+                {L.node(i, j, k), L.realNode(r[0], r[1], r[2]), sign,
+                 unilateralAxis, unilateralAxis >= 0 ? outward : 0.0}
+            );
         }
     }
 

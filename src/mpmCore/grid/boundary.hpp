@@ -11,7 +11,11 @@
 // The result is the velocity field's odd (no-slip) or normal-odd (slip)
 // extension, so the wall condition holds exactly on the wall plane for every
 // B-spline order without modifying the splines. Coulomb friction adds a
-// contact correction on the first node layer. See docs/gridDesign.md.
+// contact correction on the first node layer. slip and friction walls are
+// unilateral: material moving away from the wall sees no mirror in the
+// normal direction (contact is decided per node and step), so bodies can
+// leave a wall; noSlip walls hold the material (sticky). See
+// docs/gridDesign.md.
 #pragma once
 #include "lattice.hpp"
 #include <array>
@@ -48,7 +52,18 @@ struct BoundarySpec
 class Boundary
 {
 public:
-    struct Ghost { Index ghost; Index image; std::array<Real, 3> sign; };
+    // unilateralAxis >= 0 marks the ghost of a single slip/friction wall:
+    // its normal reflection applies only while material moves towards the
+    // wall (contact), so material can leave the wall. outward is the
+    // direction from the image into the wall along that axis.
+    struct Ghost
+    {
+        Index ghost;
+        Index image;
+        std::array<Real, 3> sign;
+        int unilateralAxis = -1;
+        Real outward = 0;
+    };
     struct FrictionNode { Index node; int axis; Real outward; Real mu; };
 
     void build(const Lattice& L, const BoundarySpec& spec);

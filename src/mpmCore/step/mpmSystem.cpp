@@ -70,7 +70,9 @@ void MpmSystem::mapToGrid()
     {
         binning_.build(lattice_, particles_);
         scatter<decltype(k), decltype(d)::value>(true, false, false);
-        foldGhosts(foldMass | foldMomentum);
+        foldGhosts(foldMass);
+        decideWallContact(0, false);
+        foldGhosts(foldMomentum);
         massToVelocity<decltype(k), decltype(d)::value>(grid_.velocity);
         fillGhosts(grid_.velocity);
     });
@@ -93,7 +95,9 @@ void MpmSystem::stepImpl(Real dt)
     {
         ScopedTimer t(timers_.nodal);
         if (order != StressUpdate::USF) addGravity();
-        foldGhosts(foldMass | foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
+        foldGhosts(foldMass);
+        decideWallContact(dt, order != StressUpdate::USF);
+        foldGhosts(foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
         massToVelocity<K, D>(grid_.velocityOld);
         fillGhosts(grid_.velocityOld);
     }
@@ -255,11 +259,47 @@ void MpmSystem::foldGhosts(unsigned what)
     }
 }
 
+// Contact of unilateral (slip, friction) walls, per image node: with the
+// wall's normal reflection left out, would the node's material move towards
+// the wall over this step (momentum + dt (force + m g))? If so the mirror
+// holds it (contact); if not, the normal component is extended evenly and the
+// wall is invisible, so material can leave. Mass must already be folded.
+void MpmSystem::decideWallContact(Real dt, bool withForce)
+{
+    const auto& ghosts = boundary_.ghosts();
+    ghostSign_.resize(ghosts.size());
+    for (std::size_t k = 0; k < ghosts.size(); ++k) ghostSign_[k] = ghosts[k].sign;
+
+    auto& trial = nodeScratch_;
+    for (auto& a : trial) a.resize(lattice_.nNodes);
+    const auto& g = grid_;
+    auto term = [&](int a, Index I) { return g.momentum[a][I] + (withForce ? dt*g.force[a][I] : 0.0); };
+    for (const auto& gh : ghosts)
+    {
+        if (gh.unilateralAxis < 0) continue;
+        const int a = gh.unilateralAxis;
+        // The force includes gravity when given; otherwise add it here.
+        trial[a][gh.image] = term(a, gh.image) + (withForce ? 0.0 : dt*g.mass[gh.image]*options_.gravity[a]);
+    }
+    for (const auto& gh : ghosts)
+    {
+        if (gh.unilateralAxis >= 0) trial[gh.unilateralAxis][gh.image] += term(gh.unilateralAxis, gh.ghost);
+    }
+    for (std::size_t k = 0; k < ghosts.size(); ++k)
+    {
+        const auto& gh = ghosts[k];
+        if (gh.unilateralAxis < 0) continue;
+        const bool contact = trial[gh.unilateralAxis][gh.image]*gh.outward >= 0;
+        if (!contact) ghostSign_[k][gh.unilateralAxis] = 1.0;
+    }
+}
+
 void MpmSystem::foldVector(std::array<std::vector<Real>, 3>& a) const
 {
     for (const auto& gh : boundary_.ghosts())
     {
-        for (int d = 0; d < 3; ++d) a[d][gh.image] += gh.sign[d]*a[d][gh.ghost];
+        const auto& sign = ghostSign_[&gh - boundary_.ghosts().data()];
+        for (int d = 0; d < 3; ++d) a[d][gh.image] += sign[d]*a[d][gh.ghost];
     }
 }
 
@@ -267,7 +307,8 @@ void MpmSystem::fillGhosts(std::array<std::vector<Real>, 3>& v) const
 {
     for (const auto& gh : boundary_.ghosts())
     {
-        for (int d = 0; d < 3; ++d) v[d][gh.ghost] = gh.sign[d]*v[d][gh.image];
+        const auto& sign = ghostSign_[&gh - boundary_.ghosts().data()];
+        for (int d = 0; d < 3; ++d) v[d][gh.ghost] = sign[d]*v[d][gh.image];
     }
 }
 

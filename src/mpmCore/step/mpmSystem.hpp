@@ -82,6 +82,7 @@ private:
     enum FoldWhat : unsigned { foldMass = 1, foldMomentum = 2, foldForce = 4 };
     void foldGhosts(unsigned what);
     void foldVector(std::array<std::vector<Real>, 3>& a) const;
+    void decideWallContact(Real dt, bool withForce);
     void fillGhosts(std::array<std::vector<Real>, 3>& v) const;
     void nodalVelocity(std::array<std::vector<Real>, 3>& v) const;
     void updateMassTolerance();
@@ -106,6 +107,10 @@ private:
     // Scratch per point: velocity gradient and displacement over the step.
     std::array<std::vector<Real>, 9> L_;
     std::array<std::vector<Real>, 3> dx_;
+
+    // Reflection signs of each ghost for this step: the boundary's, with
+    // the normal sign of unilateral walls released where material leaves.
+    std::vector<std::array<Real, 3>> ghostSign_;
 
     // Scratch for the consistent-mass sweeps: per point and per node.
     std::array<std::vector<Real>, 3> pointScratch_;

@@ -149,16 +149,11 @@ void Foam::mpmModel::report(Ostream& os)
         mom += P.mass[p]*v;
         mass += P.mass[p];
         vmax = max(vmax, magSqr(v));
-        // Small-strain elastic energy: eps = sym(F) - I
-        const scalar exx = P.F[0][p] - 1, eyy = P.F[4][p] - 1, ezz = P.F[8][p] - 1;
-        const scalar exy = 0.5*(P.F[1][p] + P.F[3][p]);
-        const scalar eyz = 0.5*(P.F[5][p] + P.F[7][p]);
-        const scalar exz = 0.5*(P.F[2][p] + P.F[6][p]);
-        se += 0.5*P.volume[p]*
-        (
-            P.sigma[mpm::XX][p]*exx + P.sigma[mpm::YY][p]*eyy + P.sigma[mpm::ZZ][p]*ezz
-          + 2*(P.sigma[mpm::XY][p]*exy + P.sigma[mpm::YZ][p]*eyz + P.sigma[mpm::XZ][p]*exz)
-        );
+        mpm::Real F[9];
+        for (int e = 0; e < 9; ++e) F[e] = P.F[e][p];
+        const mpm::Real sig[6] = {P.sigma[0][p], P.sigma[1][p], P.sigma[2][p],
+                             P.sigma[3][p], P.sigma[4][p], P.sigma[5][p]};
+        se += P.volume0[p]*system_.material(P.material[p]).storedEnergy(sig, F);
     }
     const vector vcm(mass > 0 ? mom/mass : vector(Zero));
     os  << "MPM: step " << label(system_.stepCount()) << ", kinetic energy "
@@ -175,7 +170,9 @@ void Foam::mpmModel::report(Ostream& os)
         mkDir(dir);
         summaryFile_.reset(new OFstream(dir/"summary.dat"));
         summaryFile_()
-            << "# time kineticEnergy elasticEnergy Ucm_x Ucm_y Ucm_z maxU" << nl;
+            << "# time kineticEnergy elasticEnergy Ucm_x Ucm_y Ucm_z maxU" << nl
+            << "# elasticEnergy: stored energy of each law (strain energy,"
+            << " complementary energy, fluid compression energy)" << nl;
     }
     summaryFile_().precision(12);
     summaryFile_()
