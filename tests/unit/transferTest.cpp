@@ -203,3 +203,25 @@ TEST(Boundary, NoSlipWallVelocityVanishesOnWall)
         EXPECT_NEAR(vWall, 0.0, 1e-14) << shapeName(shape);
     }
 }
+
+TEST(Boundary, SlipWallReleasesLeavingMaterialAndHoldsApproaching)
+{
+    // Points touching a slip wall: moving away they keep their velocity
+    // exactly (the wall is unilateral); moving towards it they are stopped
+    // in the normal direction near the wall.
+    for (auto shape : allShapes)
+    for (Real u : {1.0, -1.0})
+    {
+        MpmSystem s;
+        BoundarySpec b;
+        b.conditions = {WallCondition{WallType::slip, 0}};
+        StepOptions o; o.shape = shape; o.flipRatio = 0;
+        s.setup(box(10, 1, 1, 1.0), b, o);
+        s.materials().push_back(std::make_unique<NoStress>());
+        for (int i = 0; i < 8; ++i) s.particles().add({0.25 + 0.5*i, 0.5, 0.5}, {u, 0, 0}, 1.0, 0.5, 0);
+        s.step(1e-6);
+        const Real v0 = s.particles().v[0][0];
+        if (u > 0) EXPECT_NEAR(v0, u, 1e-12) << shapeName(shape) << " leaving";
+        else EXPECT_LT(std::abs(v0), 0.9*std::abs(u)) << shapeName(shape) << " approaching";
+    }
+}
