@@ -18,7 +18,8 @@ Usage (from anywhere, after `source etc/bashrc`):
     $MPMFOAM_PYTHON benchmarks/accuracyCost/run.py --quick    # smoke check
 Options: --jobs N (default 2), --outdir DIR (default: this folder; --quick
 writes to a new /tmp/accuracyCostQuick.* folder unless --outdir is given), --keep (keep cases),
---no-probe (skip the 1.1 x limit probes).
+--no-probe (skip the 1.1 x limit probes), --plot-only (redraw the PNG
+from results.csv).
 """
 import argparse
 import concurrent.futures as cf
@@ -269,7 +270,8 @@ def plot(path, rows, machine_short):
     import matplotlib.pyplot as plt
     good = [r for r in rows if lib.usable(r)]
     front = lib.pareto(good, "vcmMaxError", "solverTime")
-    fig, ax = plt.subplots(figsize=(10, 6.5))
+    fig = plt.figure(figsize=(13, 6.5))
+    ax = fig.add_axes([0.07, 0.09, 0.55, 0.8])
     for s, col in COLOURS.items():
         for mass, mk in (("lumped", "o"), ("consistent", "s")):
             pts = [r for r in good if r["shape"] == s and r["mass"] == mass]
@@ -279,25 +281,28 @@ def plot(path, rows, machine_short):
                            label=f"{s} {mass} ({len(pts)})")
     ax.plot([r["solverTime"] for r in front], [r["vcmMaxError"] for r in front],
             "k-", lw=1, zorder=3)
-    for i, r in enumerate(front):
+    key = ["Pareto front (error, time s, configuration;",
+           "aX = alpha, lump/cons = mass, nN = bar cells,",
+           "F L = CFL fraction of the analysed limit):"]
+    for i, r in enumerate(front, 1):
         ax.scatter([r["solverTime"]], [r["vcmMaxError"]], s=46, c=COLOURS[r["shape"]],
                    marker="s" if r["mass"] == "consistent" else "o",
                    edgecolors="k", linewidths=1.2, zorder=4)
-        ax.annotate(lib.label(r, short=True), (r["solverTime"], r["vcmMaxError"]),
-                    xytext=(6, 4 if i % 2 == 0 else -10), textcoords="offset points",
-                    fontsize=7)
+        ax.annotate(str(i), (r["solverTime"], r["vcmMaxError"]),
+                    xytext=(5, 3 if i % 2 else -9), textcoords="offset points", fontsize=7)
+        key.append(f"{i:2d}  {r['vcmMaxError']:.2e}  {r['solverTime']:7.3f}  {lib.label(r, short=True)}")
+    fig.text(0.64, 0.89, "\n".join(key), va="top", ha="left", family="monospace", fontsize=7.5)
     bad = sum(1 for r in rows if r["status"] != "ok" and r["set"] != "probe")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("mpmFoam time (s, solver cost breakdown total)")
     ax.set_ylabel("max |v_cm - exact| / (2 V0/pi) over 5 periods")
-    ax.set_title(f"Axial bar: accuracy vs cost, {len(good)} stable runs "
+    fig.suptitle(f"Axial bar: accuracy vs cost, {len(good)} stable runs "
                  f"({bad} unstable/failed not shown), Pareto front in black\n{machine_short}",
-                 fontsize=9)
+                 fontsize=10)
     ax.grid(True, which="both", alpha=0.25)
     ax.legend(fontsize=8, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path, dpi=130)
+    fig.savefig(path, dpi=120)
     plt.close(fig)
 
 
@@ -308,7 +313,17 @@ def main():
     ap.add_argument("--outdir", default=None)
     ap.add_argument("--keep", action="store_true", help="keep the scratch cases")
     ap.add_argument("--no-probe", dest="probe", action="store_false")
+    ap.add_argument("--plot-only", action="store_true",
+                    help="redraw accuracyCost.png from OUTDIR/results.csv, no runs")
     args = ap.parse_args()
+    if args.plot_only:
+        outdir = args.outdir or HERE
+        header, rows = lib.read_results(os.path.join(outdir, "results.csv"))
+        m = [h[2:].strip() for h in header]
+        plot(os.path.join(outdir, "accuracyCost.png"), rows,
+             f"{m[1]}, {m[2]}; {m[-1]}")
+        print(f"wrote {os.path.join(outdir, 'accuracyCost.png')}")
+        return
 
     machine = machine_info()
     machine.append(f"jobs: {args.jobs} mpmFoam processes at a time, OMP_NUM_THREADS=1")
