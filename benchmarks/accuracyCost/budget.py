@@ -37,6 +37,9 @@ def main():
     ap.add_argument("--metric", choices=sorted(lib.METRICS), default="vcm")
     ap.add_argument("--time", choices=sorted(lib.TIMES), default="solver")
     ap.add_argument("--csv", default=os.path.join(HERE, "results.csv"))
+    ap.add_argument("--robust", action="store_true",
+                    help="only families (shape, alpha, mass, ppc) with no unstable sweep run "
+                         "at the same or a smaller CFL fraction")
     args = ap.parse_args()
     if not args.target > 0:
         sys.exit("--target must be > 0")
@@ -46,9 +49,18 @@ def main():
     except OSError as exc:
         sys.exit(f"cannot read {args.csv}: {exc} (run run.py first)")
 
-    good = [r for r in rows if lib.usable(r)]
+    def family(r):
+        return (r["shape"], r["alpha"], r["mass"], r["ppc"])
+
+    def fragile(r):
+        """Some run of its family (any cell count) blew up at this CFL fraction or below."""
+        return any(q["status"] != "ok" and q["set"] != "probe" and family(q) == family(r)
+                   and q["cflFraction"] <= r["cflFraction"] for q in rows)
+
+    good = [r for r in rows if lib.usable(r) and not (args.robust and fragile(r))]
     front = lib.pareto(good, ekey, tkey)
-    print(f"Accuracy budget: target {args.metric} error <= {args.target:g}, cost = {args.time} time")
+    print(f"Accuracy budget: target {args.metric} error <= {args.target:g}, cost = {args.time} time"
+          + (", robust families only" if args.robust else ""))
     print(f"  data: {args.csv}: {len(rows)} runs, {len(good)} stable sweep runs, "
           f"{len(front)} on the Pareto front")
     for h in header:
@@ -58,11 +70,11 @@ def main():
         sys.exit("no stable runs in the CSV")
 
     print(f"\nPareto front ({args.metric} error vs {args.time} time), cheapest first; "
-          "'*' meets the target:")
+          "'*' meets the target, '!' fragile (its family blew up at this CFL or below):")
     print(f"   {'error':>10s} {'time s':>8s} {'steps':>6s} {'points':>6s}  configuration")
     for r in front:
-        ok = "*" if r[ekey] <= args.target else " "
-        print(f" {ok} {r[ekey]:10.3e} {r[tkey]:8.3f} {r['steps']:6d} {r['points']:6d}  {lib.label(r)}")
+        ok = ("*" if r[ekey] <= args.target else " ") + ("!" if fragile(r) else " ")
+        print(f"{ok} {r[ekey]:10.3e} {r[tkey]:8.3f} {r['steps']:6d} {r['points']:6d}  {lib.label(r)}")
 
     meets = [r for r in front if r[ekey] <= args.target]
     if not meets:
@@ -79,6 +91,9 @@ def main():
           f"({sum(1 for r in good if r[ekey] <= args.target)} runs overall).")
     print("Chosen (cheapest on the front with error <= target):")
     print(f"  {lib.label(choice)}")
+    if fragile(choice):
+        print("  WARNING: fragile -- runs of the same shape/alpha/mass/ppc blew up at this CFL "
+              "fraction or below (other cell counts); --robust excludes such families.")
     other = "L2" if args.metric == "vcm" else "vcm"
     print(f"  measured {args.metric} error {choice[ekey]:.3e} "
           f"({other} error {choice[lib.METRICS[other]]:.3e}), "
