@@ -144,14 +144,11 @@ void MpmSystem::stepImpl(Real dt)
 
 // P2G. massMomentum: mass, volume and momentum; force: internal force;
 // velocityOnly: momentum only, from the (new) point velocities (MUSL).
+// The choices become template arguments so the node loop has no branches.
 template<class K, int D>
 void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
 {
     auto& g = grid_;
-    const auto& P = particles_;
-    const Lattice& L = lattice_;
-    const bool apic = options_.transfer == Transfer::apic;
-
     if (massMomentum || velocityOnly)
     {
         for (int d = 0; d < 3; ++d) std::fill(g.momentum[d].begin(), g.momentum[d].end(), 0.0);
@@ -165,12 +162,31 @@ void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
     {
         for (int d = 0; d < 3; ++d) std::fill(g.force[d].begin(), g.force[d].end(), 0.0);
     }
+    auto pick = [](bool x, auto&& k) { if (x) k(std::true_type{}); else k(std::false_type{}); };
+    pick(massMomentum, [&](auto mm)
+    {
+        pick(force, [&](auto f)
+        {
+            pick(options_.transfer == Transfer::apic, [&](auto apic)
+            {
+                scatterKernel<K, D, decltype(mm)::value, decltype(f)::value, decltype(apic)::value>();
+            });
+        });
+    });
+}
 
+template<class K, int D, bool MassMomentum, bool Force, bool Apic>
+void MpmSystem::scatterKernel()
+{
+    auto& g = grid_;
+    const auto& P = particles_;
+    const Lattice& L = lattice_;
+    // Momentum is scattered with the mass, or alone (MUSL re-map).
+    constexpr bool Momentum = MassMomentum || !Force;
     Real* gm = g.mass.data();
     Real* gv = g.volume.data();
     Real* gp[3] = {g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()};
     Real* gf[3] = {g.force[0].data(), g.force[1].data(), g.force[2].data()};
-    const bool doMomentum = massMomentum || velocityOnly;
 
     forEachPointColoured([&](Index p)
     {
@@ -179,20 +195,20 @@ void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
         const Real m = P.mass[p], vol = P.volume[p];
         const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
         Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-        if (apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
+        if constexpr (Apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
         const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
         const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
         s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
         {
-            if (massMomentum)
+            if constexpr (MassMomentum)
             {
                 gm[I] += N*m;
                 gv[I] += N*vol;
             }
-            if (doMomentum)
+            if constexpr (Momentum)
             {
                 Real u0 = v0, u1 = v1, u2 = v2;
-                if (apic)
+                if constexpr (Apic)
                 {
                     u0 += Cp[0]*dx[0] + Cp[1]*dx[1] + Cp[2]*dx[2];
                     u1 += Cp[3]*dx[0] + Cp[4]*dx[1] + Cp[5]*dx[2];
@@ -201,7 +217,7 @@ void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
                 const Real Nm = N*m;
                 gp[0][I] += Nm*u0; gp[1][I] += Nm*u1; gp[2][I] += Nm*u2;
             }
-            if (force)
+            if constexpr (Force)
             {
                 gf[0][I] -= vol*(sxx*dN[0] + sxy*dN[1] + sxz*dN[2]);
                 gf[1][I] -= vol*(sxy*dN[0] + syy*dN[1] + syz*dN[2]);
@@ -433,12 +449,18 @@ void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v) const
 template<class K, int D>
 void MpmSystem::gather(Real dt)
 {
+    if (options_.transfer == Transfer::apic) gatherKernel<K, D, true>(dt);
+    else gatherKernel<K, D, false>(dt);
+}
+
+template<class K, int D, bool Apic>
+void MpmSystem::gatherKernel(Real dt)
+{
     auto& P = particles_;
     const Lattice& L = lattice_;
     const Index n = P.size();
     const Real alpha = options_.flipRatio;
-    const bool apic = options_.transfer == Transfer::apic;
-    const bool lh = std::is_same<K, LinearHat>::value;
+    constexpr bool lh = std::is_same<K, LinearHat>::value;
     const Real* vn[3] = {grid_.velocity[0].data(), grid_.velocity[1].data(), grid_.velocity[2].data()};
     const Real* vo[3] = {grid_.velocityOld[0].data(), grid_.velocityOld[1].data(), grid_.velocityOld[2].data()};
 
@@ -456,21 +478,21 @@ void MpmSystem::gather(Real dt)
             {
                 const Real vi = vn[i][I];
                 vPic[i] += N*vi;
-                dv[i] += N*(vi - vo[i][I]);
+                if constexpr (!Apic) dv[i] += N*(vi - vo[i][I]);
                 for (int j = 0; j < 3; ++j)
                 {
                     Lg[3*i + j] += vi*dN[j];
-                    if (apic) Bx[3*i + j] += N*vi*dx[j];
+                    if constexpr (Apic && !lh) Bx[3*i + j] += N*vi*dx[j];
                 }
             }
         });
         for (int i = 0; i < 3; ++i)
         {
-            P.v[i][p] = apic ? vPic[i] : alpha*(P.v[i][p] + dv[i]) + (1.0 - alpha)*vPic[i];
+            P.v[i][p] = Apic ? vPic[i] : alpha*(P.v[i][p] + dv[i]) + (1.0 - alpha)*vPic[i];
             dx_[i][p] = dt*vPic[i];
         }
         for (int e = 0; e < 9; ++e) L_[e][p] = Lg[e];
-        if (apic)
+        if constexpr (Apic)
         {
             // LH: the affine matrix is the velocity gradient (Jiang et al.);
             // B-splines: C = B D^-1 with D constant per axis.

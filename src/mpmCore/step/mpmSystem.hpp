@@ -73,7 +73,9 @@ public:
 private:
     template<class K, int D> void stepImpl(Real dt);
     template<class K, int D> void scatter(bool massMomentum, bool force, bool velocityOnly);
+    template<class K, int D, bool MassMomentum, bool Force, bool Apic> void scatterKernel();
     template<class K, int D> void gather(Real dt);
+    template<class K, int D, bool Apic> void gatherKernel(Real dt);
     template<class K, int D> void gradientFromGrid(const std::array<std::vector<Real>, 3>& v);
     template<class K, int D> void solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x);
     template<class Fn> void dispatch(Fn&& f);

@@ -9,7 +9,7 @@ void Binning::build(const Lattice& L, const Particles& p)
     std::array<Index, 3> nb{1, 1, 1};
     for (int a = 0; a < 3; ++a)
     {
-        if (L.solved[a]) nb[a] = (L.nCells[a] + blockSize - 1)/blockSize;
+        if (L.solved[a]) nb[a] = (L.nCells[a] + blockEdge(a) - 1)/blockEdge(a);
     }
     nColours_ = 1 << L.dim;
     blocksPerColourKey_ = nb[0]*nb[1]*nb[2];
@@ -29,7 +29,7 @@ void Binning::build(const Lattice& L, const Particles& p)
             if (!L.solved[a]) continue;
             Index c = Index(std::floor((p.x[a][i] - L.origin[a])*invh));
             c = std::min<Index>(std::max<Index>(c, 0), L.nCells[a] - 1);
-            b[a] = c/blockSize;
+            b[a] = c/blockEdge(a);
             colour |= int(b[a] & 1) << bit++;
         }
         const Index k = colour*blocksPerColourKey_ + b[0] + nb[0]*(b[1] + nb[1]*b[2]);

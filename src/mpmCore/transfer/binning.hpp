@@ -4,8 +4,11 @@
 // every node sums its contributions in the same order whatever the thread
 // count, so results are bitwise independent of the number of threads.
 //
-// Block edge B = 4 cells: a cubic B-spline point touches nodes up to two
-// cells away, so two same-colour blocks (one block apart) never share a node.
+// Block edge 4 cells: a cubic B-spline point touches nodes up to two cells
+// away, so two same-colour blocks (one block apart) never share a node.
+// Along x (the contiguous direction of the node arrays) blocks are 16 cells
+// long, so that the node ranges two threads write are at least 8 nodes (a
+// 64-byte cache line) apart: no false sharing between concurrent blocks.
 #pragma once
 #include "../grid/lattice.hpp"
 #include "../particles/particles.hpp"
@@ -17,6 +20,8 @@ class Binning
 {
 public:
     static constexpr int blockSize = 4;
+    static constexpr int blockSizeX = 16;
+    static int blockEdge(int axis) { return axis == 0 ? blockSizeX : blockSize; }
 
     void build(const Lattice& L, const Particles& p);
 

@@ -142,6 +142,19 @@ Foam::label Foam::seedRegions
                     << exit(FatalIOError);
             }
         }
+        for (direction a = 0; a < 3; ++a)
+        {
+            if (L.solved[a] && ppc[a] % 2 == 1 && mag(shift[a]) < 1e-12)
+            {
+                WarningInFunction
+                    << "Region " << name << ": " << ppc[a] << " points per "
+                    << "cell in direction " << label(a) << " puts points on "
+                    << "the lattice nodes (cell centres), where they are "
+                    << "fragile (docs/stabilityAnalysis.md). Prefer an even "
+                    << "number or an offset." << endl;
+                break;
+            }
+        }
         const velocityField velocity(d.subOrEmptyDict("velocity"));
         const symmTensor sigma0(d.getOrDefault<symmTensor>("stress", Zero));
         const scalar rho = materials.rho(mat);
