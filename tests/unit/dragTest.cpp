@@ -194,13 +194,24 @@ TEST(DragStokesLimit, ZeroSlipIsFiniteEverywhere)
 
 TEST(DragSettling, SchillerNaumannTerminalVelocityStokesRegime)
 {
-    // Single grain: beta/alphaS * Ut = (rhoS - rhoF) g. d = 1 um: Re_t ~ 1e-9,
-    // the Schiller-Naumann correction is ~1e-7, Ut = Stokes.
-    const Real dSmall = 1.0e-6, alphaF = 1.0 - 1.0e-6, alphaS = 1.0 - alphaF;
+    // Single grain: beta/alphaS * Ut = (rhoS - rhoF) g.
+    // d = 0.1 um: Re_t ~ 1e-9, the Schiller-Naumann correction ~1e-7: Stokes.
+    const Real alphaF = 1.0 - 1.0e-6, alphaS = 1.0 - alphaF;
+    {
+        const Real dTiny = 1.0e-7;
+        const Real ut = solveSlip(*law("SchillerNaumann", dTiny), alphaF, alphaS*(rhoS - rhoF)*g);
+        const Real utStokes = (rhoS - rhoF)*g*dTiny*dTiny/(18.0*muF);
+        EXPECT_NEAR(ut, utStokes, 2.0e-7*utStokes);
+    }
+    // d = 1 um: Re_t ~ 1e-6, first-order correction 0.15 Re^0.687 ~ 1e-5:
+    // Ut = Ut_Stokes/(1 + 0.15 Re_Stokes^0.687) up to O(1e-10).
+    const Real dSmall = 1.0e-6;
     const auto l = law("SchillerNaumann", dSmall);
     const Real ut = solveSlip(*l, alphaF, alphaS*(rhoS - rhoF)*g);
     const Real utStokes = (rhoS - rhoF)*g*dSmall*dSmall/(18.0*muF);
-    EXPECT_NEAR(ut, utStokes, 1.0e-6*utStokes);
+    const Real firstOrder = utStokes/(1.0 + 0.15*std::pow(rhoF*utStokes*dSmall/muF, 0.687));
+    EXPECT_GT(utStokes - ut, 0.5e-5*utStokes);
+    EXPECT_NEAR(ut, firstOrder, 1.0e-9*utStokes);
 
     // The relaxation time in the Stokes regime is rhoS d^2/(18 muF).
     EXPECT_NEAR(drag::relaxationTime(alphaS, rhoS, l->beta(alphaF, 0.0, rhoF, muF)),
