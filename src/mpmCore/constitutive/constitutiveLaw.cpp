@@ -91,52 +91,7 @@ std::vector<LawInfo> buildRegistry()
     return laws;
 }
 
-std::string validLawNames()
-{
-    std::string names;
-    for (const LawInfo& law : availableLaws())
-        names += (names.empty() ? "" : ", ") + law.name;
-    return names;
-}
-
-std::string parameterNames(const LawInfo& law)
-{
-    std::string names;
-    for (const Parameter& p : law.parameters)
-        names += (names.empty() ? "" : ", ") + p.name;
-    return names;
-}
-
-[[noreturn]] void fail(const LawInfo& law, const std::string& what)
-{
-    throw std::invalid_argument("constitutive law '" + law.name + "': " + what);
-}
-
-std::string describe(const Parameter& p)
-{
-    return "parameter '" + p.name + "' (" + p.description + ", valid range " + rangeText(p) + ")";
-}
-
 } // namespace
-
-// An infinite bound is always open: an infinite coefficient is never valid.
-static bool minOpen(const Parameter& p) { return p.minExclusive || std::isinf(p.minValue); }
-static bool maxOpen(const Parameter& p) { return p.maxExclusive || std::isinf(p.maxValue); }
-
-bool inRange(const Parameter& p, Real v)
-{
-    const bool aboveMin = minOpen(p) ? v > p.minValue : v >= p.minValue;
-    const bool belowMax = maxOpen(p) ? v < p.maxValue : v <= p.maxValue;
-    return aboveMin && belowMax;    // both false for NaN
-}
-
-std::string rangeText(const Parameter& p)
-{
-    std::ostringstream s;
-    s << (minOpen(p) ? "(" : "[") << p.minValue << ", " << p.maxValue
-      << (maxOpen(p) ? ")" : "]");
-    return s.str();
-}
 
 const std::vector<LawInfo>& availableLaws()
 {
@@ -146,54 +101,14 @@ const std::vector<LawInfo>& availableLaws()
 
 const LawInfo* findLaw(const std::string& name)
 {
-    for (const LawInfo& law : availableLaws())
-        if (law.name == name) return &law;
-    return nullptr;
+    return findInRegistry(availableLaws(), name);
 }
 
+// Constraints between parameters (e.g. psi <= phi) are checked by the law's
+// constructor, which throws std::invalid_argument in the same style.
 std::unique_ptr<ConstitutiveLaw> makeLaw(const std::string& name, const Coefficients& c)
 {
-    const LawInfo* law = findLaw(name);
-    if (!law)
-    {
-        throw std::invalid_argument
-        (
-            "unknown constitutive law '" + name + "'; valid laws are: " + validLawNames()
-        );
-    }
-
-    for (const auto& entry : c)
-    {
-        bool known = false;
-        for (const Parameter& p : law->parameters) known = known || p.name == entry.first;
-        if (!known)
-        {
-            fail(*law, "unknown parameter '" + entry.first + "'; its parameters are: "
-                 + parameterNames(*law));
-        }
-    }
-
-    Coefficients complete;
-    for (const Parameter& p : law->parameters)
-    {
-        const auto given = c.find(p.name);
-        if (given == c.end())
-        {
-            if (p.required) fail(*law, "missing required " + describe(p));
-            complete[p.name] = p.defaultValue;
-            continue;
-        }
-        if (!inRange(p, given->second))
-        {
-            std::ostringstream value;
-            value << given->second;
-            fail(*law, describe(p) + " has invalid value " + value.str());
-        }
-        complete[p.name] = given->second;
-    }
-    // Constraints between parameters (e.g. psi <= phi) are checked by the
-    // law's constructor, which throws std::invalid_argument in the same style.
-    return law->create(complete);
+    return makeFromRegistry("constitutive law", availableLaws(), name, c);
 }
 
 } // namespace mpm

@@ -6,6 +6,7 @@
 // few ns, negligible against the 8..64-node stencil loops, and keeps each law
 // a small self-contained class.
 #pragma once
+#include "../common/modelRegistry.hpp"
 #include "../types.hpp"
 #include <map>
 #include <memory>
@@ -28,31 +29,6 @@ struct PointStress
     Real* sigma;          // Cauchy stress (xx yy zz xy yz xz), updated in place
     Real* eqPlasticStrain;// accumulated equivalent plastic strain (history)
 };
-
-// Coefficients of a law, by name. The OpenFOAM layer fills this from the
-// material's dictionary using the law's parameter list (so reading, defaults
-// and range checks live in one place for all laws).
-struct Parameter
-{
-    std::string name;
-    std::string description;  // with units, for the log and the error text
-    bool required;
-    Real defaultValue;
-    Real minValue;            // lower bound (inclusive unless minExclusive)
-    Real maxValue;            // upper bound (inclusive unless maxExclusive)
-    // Appended with defaults so existing brace-initialisations stay valid;
-    // needed for ranges such as E > 0 or nu < 0.5.
-    bool minExclusive = false;
-    bool maxExclusive = false;
-};
-
-// True when v lies in the parameter's range (false for NaN).
-bool inRange(const Parameter& p, Real v);
-
-// The range in interval notation, e.g. "(0, inf)" or "[0, 0.5)".
-std::string rangeText(const Parameter& p);
-
-using Coefficients = std::map<std::string, Real>;
 
 class ConstitutiveLaw
 {
@@ -88,13 +64,7 @@ protected:
 // Creation by name, with a parameter list per law. Lives in the core so that
 // tests and benchmarks can build laws without OpenFOAM; the OpenFOAM layer
 // wraps it in a run-time selection.
-struct LawInfo
-{
-    std::string name;
-    std::string summary;
-    std::vector<Parameter> parameters;
-    std::unique_ptr<ConstitutiveLaw> (*create)(const Coefficients&);
-};
+using LawInfo = ModelInfo<ConstitutiveLaw>;
 
 const std::vector<LawInfo>& availableLaws();
 const LawInfo* findLaw(const std::string& name);

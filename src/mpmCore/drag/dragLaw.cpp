@@ -56,32 +56,6 @@ std::vector<DragLawInfo> buildRegistry()
     };
 }
 
-std::string validNames()
-{
-    std::string names;
-    for (const DragLawInfo& law : availableDragLaws())
-        names += (names.empty() ? "" : ", ") + law.name;
-    return names;
-}
-
-std::string parameterNames(const DragLawInfo& law)
-{
-    std::string names;
-    for (const Parameter& p : law.parameters)
-        names += (names.empty() ? "" : ", ") + p.name;
-    return names;
-}
-
-[[noreturn]] void fail(const DragLawInfo& law, const std::string& what)
-{
-    throw std::invalid_argument("drag law '" + law.name + "': " + what);
-}
-
-std::string describe(const Parameter& p)
-{
-    return "parameter '" + p.name + "' (" + p.description + ", valid range " + rangeText(p) + ")";
-}
-
 } // namespace
 
 DragLaw::DragLaw(Real d, Real alphaFMin)
@@ -113,52 +87,12 @@ const std::vector<DragLawInfo>& availableDragLaws()
 
 const DragLawInfo* findDragLaw(const std::string& name)
 {
-    for (const DragLawInfo& law : availableDragLaws())
-        if (law.name == name) return &law;
-    return nullptr;
+    return findInRegistry(availableDragLaws(), name);
 }
 
 std::unique_ptr<DragLaw> makeDragLaw(const std::string& name, const Coefficients& c)
 {
-    const DragLawInfo* law = findDragLaw(name);
-    if (!law)
-    {
-        throw std::invalid_argument
-        (
-            "unknown drag law '" + name + "'; valid drag laws are: " + validNames()
-        );
-    }
-
-    for (const auto& entry : c)
-    {
-        bool known = false;
-        for (const Parameter& p : law->parameters) known = known || p.name == entry.first;
-        if (!known)
-        {
-            fail(*law, "unknown parameter '" + entry.first + "'; its parameters are: "
-                 + parameterNames(*law));
-        }
-    }
-
-    Coefficients complete;
-    for (const Parameter& p : law->parameters)
-    {
-        const auto given = c.find(p.name);
-        if (given == c.end())
-        {
-            if (p.required) fail(*law, "missing required " + describe(p));
-            complete[p.name] = p.defaultValue;
-            continue;
-        }
-        if (!inRange(p, given->second))
-        {
-            std::ostringstream value;
-            value << given->second;
-            fail(*law, describe(p) + " has invalid value " + value.str());
-        }
-        complete[p.name] = given->second;
-    }
-    return law->create(complete);
+    return makeFromRegistry("drag law", availableDragLaws(), name, c);
 }
 
 } // namespace mpm

@@ -28,7 +28,7 @@
 // No allocation, no exceptions per call; slip = 0 gives the finite Re -> 0
 // limit.
 #pragma once
-#include "../constitutive/constitutiveLaw.hpp"   // Parameter, inRange, rangeText, Coefficients
+#include "../common/modelRegistry.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -124,13 +124,7 @@ protected:
 // Registry, same pattern as the constitutive laws (constitutiveLaw.hpp):
 // the OpenFOAM layer lists valid names and parameters from this table and
 // turns std::invalid_argument into a FatalIOError.
-struct DragLawInfo
-{
-    std::string name;
-    std::string summary;
-    std::vector<Parameter> parameters;
-    std::unique_ptr<DragLaw> (*create)(const Coefficients&);
-};
+using DragLawInfo = ModelInfo<DragLaw>;
 
 const std::vector<DragLawInfo>& availableDragLaws();
 const DragLawInfo* findDragLaw(const std::string& name);

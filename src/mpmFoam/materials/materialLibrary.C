@@ -7,12 +7,7 @@ namespace
 
 std::string validModelNames()
 {
-    std::string s;
-    for (const auto& law : mpm::availableLaws())
-    {
-        s += (s.empty() ? "" : " ") + law.name;
-    }
-    return s;
+    return mpm::registryNames(mpm::availableLaws());
 }
 
 } // namespace
