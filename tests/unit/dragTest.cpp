@@ -351,6 +351,6 @@ TEST(DragRegistry, MissingOrInvalidDiameterNamesTheParameter)
     EXPECT_NE(typo.find("unknown parameter 'diameter'"), std::string::npos) << typo;
     EXPECT_NE(typo.find("d, alphaFMin"), std::string::npos) << typo;
 
-    EXPECT_THROW(WenYuDrag(-1.0, 0.2), std::invalid_argument);
-    EXPECT_THROW(WenYuDrag(1.0e-3, 0.0), std::invalid_argument);
+    EXPECT_THROW(DragLaw("WenYu", &drag::wenYu, -1.0, 0.2), std::invalid_argument);
+    EXPECT_THROW(DragLaw("WenYu", &drag::wenYu, 1.0e-3, 0.0), std::invalid_argument);
 }

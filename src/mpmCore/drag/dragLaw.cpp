@@ -30,11 +30,18 @@ Parameter alphaFMin()
     return p;
 }
 
-template<class Law>
+template<const char* Name, DragFormula Formula>
 std::unique_ptr<DragLaw> create(const Coefficients& c)
 {
-    return std::make_unique<Law>(c.at("d"), c.at("alphaFMin"));
+    return std::make_unique<DragLaw>(Name, Formula, c.at("d"), c.at("alphaFMin"));
 }
+
+constexpr char schillerNaumannName[] = "SchillerNaumann";
+constexpr char wenYuName[] = "WenYu";
+constexpr char ergunName[] = "Ergun";
+constexpr char gidaspowName[] = "Gidaspow";
+constexpr char diFeliceName[] = "DiFelice";
+constexpr char beetstraName[] = "Beetstra";
 
 std::vector<DragLawInfo> buildRegistry()
 {
@@ -42,24 +49,26 @@ std::vector<DragLawInfo> buildRegistry()
     return
     {
         {"SchillerNaumann", "single sphere (Schiller-Naumann 1933), dilute, no hindrance",
-         common, &create<SchillerNaumannDrag>},
+         common, &create<schillerNaumannName, &drag::schillerNaumann>},
         {"WenYu", "Wen-Yu (1966): Schiller-Naumann Cd times alphaF^-2.65, dilute to moderate",
-         common, &create<WenYuDrag>},
+         common, &create<wenYuName, &drag::wenYu>},
         {"Ergun", "Ergun (1952) packed-bed pressure drop, dense",
-         common, &create<ErgunDrag>},
+         common, &create<ergunName, &drag::ergun>},
         {"Gidaspow", "Gidaspow (1994): Ergun for alphaF < 0.8, Wen-Yu above (discontinuous)",
-         common, &create<GidaspowDrag>},
+         common, &create<gidaspowName, &drag::gidaspow>},
         {"DiFelice", "Di Felice (1994) voidage function alphaF^-chi(Re), Dalla Valle Cd",
-         common, &create<DiFeliceDrag>},
+         common, &create<diFeliceName, &drag::diFelice>},
         {"Beetstra", "Beetstra, van der Hoef & Kuipers (2007) lattice-Boltzmann fit, monodisperse",
-         common, &create<BeetstraDrag>}
+         common, &create<beetstraName, &drag::beetstra>}
     };
 }
 
 } // namespace
 
-DragLaw::DragLaw(Real d, Real alphaFMin)
+DragLaw::DragLaw(const char* name, DragFormula formula, Real d, Real alphaFMin)
 :
+    name_(name),
+    formula_(formula),
     d_(d),
     alphaFMin_(alphaFMin)
 {

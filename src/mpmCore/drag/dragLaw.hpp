@@ -88,20 +88,23 @@ inline Real relaxationTime(Real alphaS, Real rhoS, Real beta)
 
 } // namespace drag
 
+// A correlation beta(alphaF, slip, rhoF, muF, d); alphaF already clamped.
+using DragFormula = Real (*)(Real alphaF, Real slip, Real rhoF, Real muF, Real d);
+
+// A selected drag law: one correlation (dragLaws.hpp) and its coefficients.
 class DragLaw
 {
 public:
     // Throws std::invalid_argument unless d > 0 and 0 < alphaFMin < 1.
-    DragLaw(Real d, Real alphaFMin);
-    virtual ~DragLaw() = default;
+    DragLaw(const char* name, DragFormula formula, Real d, Real alphaFMin);
 
-    virtual const char* typeName() const = 0;
+    const char* typeName() const { return name_; }
 
     // beta [kg/(m^3 s)] at one point (alphaF clamped to [alphaFMin, 1]).
     Real beta(Real alphaF, Real slip, Real rhoF, Real muF) const
     {
         const Real aF = std::min(std::max(alphaF, alphaFMin_), Real(1));
-        return evaluate(aF, slip, rhoF, muF);
+        return formula_(aF, slip, rhoF, muF, d_);
     }
 
     // SoA batch for a fluid of uniform rhoF, muF: betaOut[i] = beta(alphaF[i],
@@ -113,10 +116,9 @@ public:
     Real d() const { return d_; }
     Real alphaFMin() const { return alphaFMin_; }
 
-protected:
-    // The law itself, with alphaF already in [alphaFMin, 1].
-    virtual Real evaluate(Real alphaF, Real slip, Real rhoF, Real muF) const = 0;
-
+private:
+    const char* name_;
+    DragFormula formula_;
     Real d_;
     Real alphaFMin_;
 };

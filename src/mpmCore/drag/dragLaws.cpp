@@ -5,8 +5,7 @@
 #include <cmath>
 
 namespace mpm {
-
-namespace {
+namespace drag {
 
 Real wenYu(Real alphaF, Real slip, Real rhoF, Real muF, Real d)
 {
@@ -21,40 +20,28 @@ Real ergun(Real alphaF, Real slip, Real rhoF, Real muF, Real d)
     return 150*alphaS*alphaS*muF/(alphaF*d*d) + 1.75*alphaS*rhoF*slip/d;
 }
 
-} // namespace
-
-Real SchillerNaumannDrag::evaluate(Real alphaF, Real slip, Real rhoF, Real muF) const
+Real schillerNaumann(Real alphaF, Real slip, Real rhoF, Real muF, Real d)
 {
-    const Real Rep = drag::reynolds(1, slip, rhoF, muF, d_);
-    return drag::stokesBeta(1 - alphaF, muF, d_)*drag::cdReSchillerNaumann(Rep)/24;
+    const Real Rep = drag::reynolds(1, slip, rhoF, muF, d);
+    return drag::stokesBeta(1 - alphaF, muF, d)*drag::cdReSchillerNaumann(Rep)/24;
 }
 
-Real WenYuDrag::evaluate(Real alphaF, Real slip, Real rhoF, Real muF) const
+Real gidaspow(Real alphaF, Real slip, Real rhoF, Real muF, Real d)
 {
-    return wenYu(alphaF, slip, rhoF, muF, d_);
+    return alphaF < gidaspowSwitch ? ergun(alphaF, slip, rhoF, muF, d)
+                                   : wenYu(alphaF, slip, rhoF, muF, d);
 }
 
-Real ErgunDrag::evaluate(Real alphaF, Real slip, Real rhoF, Real muF) const
+Real diFelice(Real alphaF, Real slip, Real rhoF, Real muF, Real d)
 {
-    return ergun(alphaF, slip, rhoF, muF, d_);
-}
-
-Real GidaspowDrag::evaluate(Real alphaF, Real slip, Real rhoF, Real muF) const
-{
-    return alphaF < alphaFSwitch ? ergun(alphaF, slip, rhoF, muF, d_)
-                                 : wenYu(alphaF, slip, rhoF, muF, d_);
-}
-
-Real DiFeliceDrag::evaluate(Real alphaF, Real slip, Real rhoF, Real muF) const
-{
-    const Real Re = drag::reynolds(alphaF, slip, rhoF, muF, d_);
+    const Real Re = drag::reynolds(alphaF, slip, rhoF, muF, d);
     const Real x = Re > 0 ? 1.5 - std::log10(Re) : 0;   // exp(-x^2/2) -> 0 as Re -> 0
     const Real chi = Re > 0 ? 3.7 - 0.65*std::exp(-0.5*x*x) : 3.7;
-    return drag::stokesBeta(1 - alphaF, muF, d_)*drag::cdReDallaValle(Re)/24
+    return drag::stokesBeta(1 - alphaF, muF, d)*drag::cdReDallaValle(Re)/24
           *std::pow(alphaF, 1 - chi);
 }
 
-Real BeetstraDrag::dimensionlessForce(Real alphaF, Real Re)
+Real beetstraForce(Real alphaF, Real Re)
 {
     const Real alphaS = 1 - alphaF, aF2 = alphaF*alphaF;
     Real F = 10*alphaS/aF2 + aF2*(1 + 1.5*std::sqrt(alphaS));
@@ -66,10 +53,11 @@ Real BeetstraDrag::dimensionlessForce(Real alphaF, Real Re)
     return F;
 }
 
-Real BeetstraDrag::evaluate(Real alphaF, Real slip, Real rhoF, Real muF) const
+Real beetstra(Real alphaF, Real slip, Real rhoF, Real muF, Real d)
 {
-    const Real Re = drag::reynolds(alphaF, slip, rhoF, muF, d_);
-    return drag::stokesBeta(1 - alphaF, muF, d_)*alphaF*dimensionlessForce(alphaF, Re);
+    const Real Re = drag::reynolds(alphaF, slip, rhoF, muF, d);
+    return drag::stokesBeta(1 - alphaF, muF, d)*alphaF*beetstraForce(alphaF, Re);
 }
 
+} // namespace drag
 } // namespace mpm
