@@ -59,6 +59,14 @@ void MpmSystem::forEachPointColoured(Fn&& fn) const
 
 void MpmSystem::step(Real dt)
 {
+    if (coupling_.active() && options_.massMatrix == MassMatrix::consistent)
+    {
+        throw std::invalid_argument
+        (
+            "fluid coupling needs massMatrix lumped (the implicit drag update "
+            "is per node)"
+        );
+    }
     dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
     ++stepCount_;
 }
@@ -348,20 +356,56 @@ void MpmSystem::massToVelocity(std::array<std::vector<Real>, 3>& v)
     else solveMass<K, D>(grid_.momentum, v);
 }
 
+void FluidCoupling::resetIntegral()
+{
+    for (auto& a : velocityIntegral) std::fill(a.begin(), a.end(), 0.0);
+    time = 0;
+}
+
 template<class K, int D>
 void MpmSystem::nodalUpdate(Real dt)
 {
     const Index n = lattice_.nNodes;
     auto& g = grid_;
-    for (auto& a : nodeRhs_) a.resize(n);
-    #pragma omp parallel for if(worthThreads(n))
-    for (Index I = 0; I < n; ++I)
+    if (coupling_.active())
     {
-        for (int d = 0; d < 3; ++d) nodeRhs_[d][I] = g.momentum[d][I] + dt*g.force[d][I];
+        // Implicit drag: (m + dt K) v = p + dt (f + F + K U); lumped mass.
+        auto& c = coupling_;
+        const Real tol = massTolerance_;
+        #pragma omp parallel for if(worthThreads(n))
+        for (Index I = 0; I < n; ++I)
+        {
+            const Real m = g.mass[I];
+            const Real inv = m > tol ? 1.0/(m + dt*c.K[I]) : 0.0;
+            for (int d = 0; d < 3; ++d)
+            {
+                g.velocity[d][I] =
+                    (g.momentum[d][I] + dt*(g.force[d][I] + c.F[d][I] + c.K[I]*c.U[d][I]))*inv;
+            }
+        }
     }
-    solveMass<K, D>(nodeRhs_, g.velocity);
+    else
+    {
+        for (auto& a : nodeRhs_) a.resize(n);
+        #pragma omp parallel for if(worthThreads(n))
+        for (Index I = 0; I < n; ++I)
+        {
+            for (int d = 0; d < 3; ++d) nodeRhs_[d][I] = g.momentum[d][I] + dt*g.force[d][I];
+        }
+        solveMass<K, D>(nodeRhs_, g.velocity);
+    }
     applyFriction(g.velocity);
     fillGhosts(g.velocity);
+    if (coupling_.active())
+    {
+        auto& c = coupling_;
+        #pragma omp parallel for if(worthThreads(n))
+        for (Index I = 0; I < n; ++I)
+        {
+            for (int d = 0; d < 3; ++d) c.velocityIntegral[d][I] += dt*g.velocity[d][I];
+        }
+        c.time += dt;
+    }
 }
 
 // x = M^-1 rhs for the lumped mass, or the consistent mass approximated by

@@ -34,6 +34,25 @@ public:
     std::int64_t pointId;
 };
 
+// Momentum exchange with a fluid, per node (each real node is a fluid
+// cell). The nodal update is implicit in the solid velocity v:
+//   (m + dt K) v_new = p + dt (f + F + K U)
+// so stiff drag (relaxation time << dt) stays stable and relaxes v to the
+// fluid velocity plus the correct equilibrium slip. Empty K: no coupling,
+// nothing is computed. The step also integrates v_new over time, for the
+// fluid's drag source (the solid velocity averaged over the sub-cycles).
+struct FluidCoupling
+{
+    std::vector<Real> K;                      // beta V_cell [kg/s], padded nodes
+    std::array<std::vector<Real>, 3> U;       // fluid velocity at the nodes
+    std::array<std::vector<Real>, 3> F;       // extra force, e.g. buoyancy [N]
+    std::array<std::vector<Real>, 3> velocityIntegral;  // sum dt v_new
+    Real time = 0;                            // sum dt
+
+    bool active() const { return !K.empty(); }
+    void resetIntegral();
+};
+
 class MpmSystem
 {
 public:
@@ -49,6 +68,10 @@ public:
     const StepTimers& timers() const { return timers_; }
     Index stepCount() const { return stepCount_; }
     void setStepCount(Index n) { stepCount_ = n; }
+
+    // Fluid coupling arrays, sized by the caller (padded nodes); see above.
+    FluidCoupling& coupling() { return coupling_; }
+    const FluidCoupling& coupling() const { return coupling_; }
 
     std::vector<std::unique_ptr<ConstitutiveLaw>>& materials() { return materials_; }
     const ConstitutiveLaw& material(int m) const { return *materials_[m]; }
@@ -103,6 +126,7 @@ private:
     GridState grid_;
     Binning binning_;
     StepTimers timers_;
+    FluidCoupling coupling_;
     Index stepCount_ = 0;
     Real massTolerance_ = 0;
 

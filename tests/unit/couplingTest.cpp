@@ -1,0 +1,78 @@
+// Fluid coupling in the nodal update: stiff drag (relaxation time / dt =
+// 1e-3) is stable and gives the analytic equilibrium slip
+//   v = (m g + F) / K   (gravity, buoyancy F, drag K (U - v) in balance),
+// and the time integral of the solid velocity is accumulated for the fluid.
+#include "testHelpers.hpp"
+#include <gtest/gtest.h>
+
+using namespace mpm;
+using namespace mpm::test;
+
+TEST(FluidCoupling, StiffDragReachesEquilibriumSlip)
+{
+    for (auto shape : {ShapeKind::linearHat, ShapeKind::cubicBSpline})
+    for (Real alpha : {0.0, 1.0})
+    {
+        MpmSystem s;
+        BoundarySpec b;
+        b.conditions = {WallCondition{WallType::periodic, 0}};
+        StepOptions o;
+        o.shape = shape; o.flipRatio = alpha;
+        o.gravity = {0, 0, -9.81};
+        s.setup(box(8, 8, 8, 0.1), b, o);
+        s.materials().push_back(std::make_unique<NoStress>(0.0));
+        // A uniform suspension: 8 points per cell, solid fraction 0.3, grains
+        // of density 2500 in water (1000).
+        const Real h = 0.1, cellV = h*h*h, alphaS = 0.3, rhoS = 2500, rhoF = 1000;
+        for (int k = 0; k < 16; ++k)
+        for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 16; ++i)
+        {
+            const Real vol = alphaS*cellV/8;
+            s.particles().add({(i + 0.5)*h/2, (j + 0.5)*h/2, (k + 0.5)*h/2}, {0, 0, 0}, rhoS*vol, vol, 0);
+        }
+        const Lattice& L = s.lattice();
+        const Real m = rhoS*alphaS*cellV;             // solid mass per node
+        const Real dt = 1e-3, tau = 1e-3*dt;          // relaxation time / dt = 1e-3
+        const Real Kval = m/tau;                      // K = beta V, tau = m/K
+        auto& c = s.coupling();
+        c.K.assign(L.nNodes, 0.0);
+        for (int d = 0; d < 3; ++d)
+        {
+            c.U[d].assign(L.nNodes, 0.0);
+            c.F[d].assign(L.nNodes, 0.0);
+            c.velocityIntegral[d].assign(L.nNodes, 0.0);
+        }
+        for (int kk = 0; kk < 8; ++kk)
+        for (int jj = 0; jj < 8; ++jj)
+        for (int ii = 0; ii < 8; ++ii)
+        {
+            const Index I = L.realNode(ii, jj, kk);
+            c.K[I] = Kval;
+            c.F[2][I] = alphaS*cellV*rhoF*9.81;       // buoyancy: -V_s rho_f g
+        }
+        for (int n = 0; n < 20; ++n) s.step(dt);
+        const Real vEq = (m*(-9.81) + alphaS*cellV*rhoF*9.81)/Kval;
+        for (Index p = 0; p < s.particles().size(); ++p)
+        {
+            ASSERT_NEAR(s.particles().v[2][p], vEq, 1e-9*std::abs(vEq)) << shapeName(shape) << " alpha " << alpha;
+            ASSERT_NEAR(s.particles().v[0][p], 0.0, 1e-15);
+        }
+        EXPECT_NEAR(c.time, 20*dt, 1e-15);
+        const Index I = L.realNode(3, 3, 3);
+        // Implicit drag: the first step already reaches the equilibrium to
+        // O(tau/dt), so the time average is the equilibrium to ~1e-4.
+        EXPECT_NEAR(c.velocityIntegral[2][I]/c.time, vEq, 1e-3*std::abs(vEq));
+    }
+}
+
+TEST(FluidCoupling, RefusedWithConsistentMass)
+{
+    MpmSystem s;
+    StepOptions o; o.massMatrix = MassMatrix::consistent;
+    s.setup(box(8, 1, 1, 0.1), BoundarySpec{}, o);
+    s.materials().push_back(std::make_unique<NoStress>());
+    s.particles().add({0.35, 0.05, 0.05}, {0, 0, 0}, 1, 1e-3, 0);
+    s.coupling().K.assign(s.lattice().nNodes, 1.0);
+    EXPECT_THROW(s.step(1e-3), std::invalid_argument);
+}
