@@ -21,7 +21,7 @@ run() { (cd "$1" && shift && timeout 120 "$@"); }
 c=$(fresh unknownModel)
 sed -i 's/model   linearElastic;/model   linearElastik;/' "$(props "$c")"
 expectFailure "unknown model" "Unknown model 'linearElastik'" run "$c" mpmFoam
-expectFailure "unknown model lists valid models" "Valid models: linearElastic, neoHookean, newtonianFluid, druckerPrager" run "$c" mpmFoam
+expectFailure "unknown model lists valid models" "Valid models: linearElastic, neoHookean, newtonianFluid, druckerPrager, dilute" run "$c" mpmFoam
 expectFailure "unknown model names the file" "constant/mpmProperties" run "$c" mpmFoam
 
 c=$(fresh missingCoefficient)

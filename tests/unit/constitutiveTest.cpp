@@ -424,7 +424,7 @@ TEST(ConstitutiveLawRegistry, EveryLawIsConstructibleByName)
 {
     const Coefficients values{{"rho", 1000}, {"E", 1e6}, {"nu", 0.25}, {"K", 1e5},
                               {"mu", 1e-3}, {"phi", 30}};
-    ASSERT_EQ(availableLaws().size(), 4u);
+    ASSERT_EQ(availableLaws().size(), 5u);
     for (const LawInfo& info : availableLaws())
     {
         ASSERT_EQ(findLaw(info.name), &info);
@@ -434,7 +434,7 @@ TEST(ConstitutiveLawRegistry, EveryLawIsConstructibleByName)
         const auto law = makeLaw(info.name, c);
         EXPECT_EQ(info.name, law->typeName());
         EXPECT_EQ(law->rho0(), 1000);
-        EXPECT_GT(law->waveSpeed(1.0), 0);
+        if (info.name != "dilute") EXPECT_GT(law->waveSpeed(1.0), 0);   // dilute: no stress, no waves
     }
     EXPECT_EQ(findLaw("nope"), nullptr);
 }

@@ -49,7 +49,7 @@ TEST(FluidCoupling, StiffDragReachesEquilibriumSlip)
         {
             const Index I = L.realNode(ii, jj, kk);
             c.K[I] = Kval;
-            c.F[2][I] = alphaS*cellV*rhoF*9.81;       // buoyancy: -V_s rho_f g
+            c.F[2][I] = rhoF*9.81;                    // buoyancy per solid volume: -rho_f g
         }
         for (int n = 0; n < 20; ++n) s.step(dt);
         const Real vEq = (m*(-9.81) + alphaS*cellV*rhoF*9.81)/Kval;

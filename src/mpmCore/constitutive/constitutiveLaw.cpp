@@ -3,6 +3,7 @@
 // choices and reads coefficients from this table, so adding a law here is
 // all that is needed to make it selectable.
 #include "constitutiveLaw.hpp"
+#include "dilute.hpp"
 #include "druckerPrager.hpp"
 #include "linearElastic.hpp"
 #include "neoHookean.hpp"
@@ -87,6 +88,13 @@ std::vector<LawInfo> buildRegistry()
             optional("psi", "dilatancy angle [deg], at most phi", 0.0, 0, 90, false, true)
         },
         &DruckerPrager::create
+    });
+    laws.push_back
+    ({
+        "dilute",
+        "stress-free grains of a dilute suspension (moved by gravity and the fluid)",
+        {density()},
+        &Dilute::create
     });
     return laws;
 }

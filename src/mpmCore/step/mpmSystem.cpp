@@ -369,7 +369,7 @@ void MpmSystem::nodalUpdate(Real dt)
     auto& g = grid_;
     if (coupling_.active())
     {
-        // Implicit drag: (m + dt K) v = p + dt (f + F + K U); lumped mass.
+        // Implicit drag: (m + dt K) v = p + dt (f + V_s F + K U); lumped mass.
         auto& c = coupling_;
         const Real tol = massTolerance_;
         #pragma omp parallel for if(worthThreads(n))
@@ -380,7 +380,7 @@ void MpmSystem::nodalUpdate(Real dt)
             for (int d = 0; d < 3; ++d)
             {
                 g.velocity[d][I] =
-                    (g.momentum[d][I] + dt*(g.force[d][I] + c.F[d][I] + c.K[I]*c.U[d][I]))*inv;
+                    (g.momentum[d][I] + dt*(g.force[d][I] + g.volume[I]*c.F[d][I] + c.K[I]*c.U[d][I]))*inv;
             }
         }
     }

@@ -36,7 +36,9 @@ public:
 
 // Momentum exchange with a fluid, per node (each real node is a fluid
 // cell). The nodal update is implicit in the solid velocity v:
-//   (m + dt K) v_new = p + dt (f + F + K U)
+//   (m + dt K) v_new = p + dt (f + V_s F + K U)
+// with V_s the node's solid volume (sum N V_p), so F is a force per unit
+// solid volume (buoyancy: -rho_f grad p) that follows the material.
 // so stiff drag (relaxation time << dt) stays stable and relaxes v to the
 // fluid velocity plus the correct equilibrium slip. Empty K: no coupling,
 // nothing is computed. The step also integrates v_new over time, for the
@@ -45,7 +47,7 @@ struct FluidCoupling
 {
     std::vector<Real> K;                      // beta V_cell [kg/s], padded nodes
     std::array<std::vector<Real>, 3> U;       // fluid velocity at the nodes
-    std::array<std::vector<Real>, 3> F;       // extra force, e.g. buoyancy [N]
+    std::array<std::vector<Real>, 3> F;       // force per solid volume [N/m^3]
     std::array<std::vector<Real>, 3> velocityIntegral;  // sum dt v_new
     Real time = 0;                            // sum dt
 
@@ -68,6 +70,7 @@ public:
     const StepTimers& timers() const { return timers_; }
     Index stepCount() const { return stepCount_; }
     void setStepCount(Index n) { stepCount_ = n; }
+    void setGravity(const std::array<Real, 3>& g) { options_.gravity = g; }
 
     // Fluid coupling arrays, sized by the caller (padded nodes); see above.
     FluidCoupling& coupling() { return coupling_; }

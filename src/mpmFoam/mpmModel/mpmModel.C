@@ -181,10 +181,10 @@ void Foam::mpmModel::report(Ostream& os)
         << Foam::sqrt(vmax) << endl;
 }
 
-void Foam::mpmModel::summary(Ostream& os) const
+void Foam::mpmModel::summary(Ostream& os, scalar fluidTime) const
 {
     const mpm::StepTimers& t = system_.timers();
-    const scalar total = t.total() + ioTime_;
+    const scalar total = t.total() + ioTime_ + max(fluidTime, scalar(0));
     auto line = [&](const char* name, scalar s)
     {
         os  << "    " << name << tab << s << " s" << tab
@@ -203,5 +203,6 @@ void Foam::mpmModel::summary(Ostream& os) const
     line("G2P          ", t.g2p);
     line("constitutive ", t.constitutive);
     line("I/O          ", ioTime_);
+    if (fluidTime >= 0) line("fluid (PIMPLE)", fluidTime);
     os  << endl;
 }

@@ -157,6 +157,9 @@ Foam::label Foam::seedRegions
         }
         const velocityField velocity(d.subOrEmptyDict("velocity"));
         const symmTensor sigma0(d.getOrDefault<symmTensor>("stress", Zero));
+        // Share of the cell the grains fill: a suspension or a packed bed in
+        // a fluid (the points carry the solid volume only).
+        const scalar solidFraction = readBounded(d, "solidFraction", 1, SMALL, 1, false);
         const scalar rho = materials.rho(mat);
 
         // Candidate points: a regular sub-lattice in every cell.
@@ -177,7 +180,7 @@ Foam::label Foam::seedRegions
                 {
                     if (L.solved[a]) x[a] += ((idx[a] + 0.5)/ppc[a] - 0.5 + shift[a])*L.h;
                 }
-                cellVol[c] = mesh.cellVolumes()[celli]/perCell;
+                cellVol[c] = solidFraction*mesh.cellVolumes()[celli]/perCell;
                 candidates[c++] = x;
             }
         }

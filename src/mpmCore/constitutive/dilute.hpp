@@ -1,0 +1,28 @@
+// Stress-free material points: a dilute suspension of grains that do not
+// touch, moved only by gravity and the fluid (drag, buoyancy). The signal
+// speed is zero, so the MPM step is limited by the point speed and the
+// fluid step alone.
+#pragma once
+#include "constitutiveLaw.hpp"
+
+namespace mpm {
+
+class Dilute : public ConstitutiveLaw
+{
+public:
+    explicit Dilute(Real rho) { rho0_ = rho; }
+    static std::unique_ptr<ConstitutiveLaw> create(const Coefficients& c)
+    {
+        return std::make_unique<Dilute>(c.at("rho"));
+    }
+
+    const char* typeName() const override { return "dilute"; }
+    void updateStress(const PointKinematics&, PointStress& s) const override
+    {
+        for (int a = 0; a < 6; ++a) s.sigma[a] = 0;
+    }
+    Real waveSpeed(Real) const override { return 0; }
+    Real storedEnergy(const Real*, const Real*) const override { return 0; }
+};
+
+} // namespace mpm

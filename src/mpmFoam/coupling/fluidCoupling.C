@@ -1,0 +1,259 @@
+#include "fluidCoupling.H"
+#include "choice.H"
+#include "uniformDimensionedFields.H"
+
+namespace
+{
+
+const char* modeName(Foam::fluidCoupling::couplingMode m)
+{
+    switch (m)
+    {
+        case Foam::fluidCoupling::couplingMode::oneWay: return "oneWay";
+        case Foam::fluidCoupling::couplingMode::twoWayMomentum: return "twoWayMomentum";
+        default: return "twoWay";
+    }
+}
+
+bool parseMode(const std::string& s, Foam::fluidCoupling::couplingMode& m)
+{
+    using M = Foam::fluidCoupling::couplingMode;
+    for (auto c : {M::oneWay, M::twoWayMomentum, M::twoWay})
+    {
+        if (s == modeName(c)) { m = c; return true; }
+    }
+    return false;
+}
+
+} // namespace
+
+Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase& fluid)
+:
+    mesh_(mesh),
+    mpm_(mpm),
+    fluid_(fluid),
+    g_("g", dimAcceleration, Zero)
+{
+    const dictionary& mpmDict = mpm.dict();
+    if (!mpmDict.isDict("coupling"))
+    {
+        FatalIOErrorInFunction(mpmDict)
+            << "The case has a fluid (constant/transportProperties, 0/U) but "
+            << "mpmProperties has no coupling { mode ...; forces (...); }" << nl
+            << "Valid modes: oneWay twoWayMomentum twoWay; valid forces: "
+            << "drag pressureGradient gravity" << exit(FatalIOError);
+    }
+    const dictionary& d = mpmDict.subDict("coupling");
+    Info<< "Fluid coupling:" << nl;
+    mode_ = readChoice(d, "mode", parseMode, modeName, "oneWay twoWayMomentum twoWay", couplingMode::twoWay);
+
+    const wordList forces(d.get<wordList>("forces"));
+    for (const word& f : forces)
+    {
+        if (f == "drag") drag_ = true;
+        else if (f == "pressureGradient") pressureGradient_ = true;
+        else if (f == "gravity") gravity_ = true;
+        else
+        {
+            FatalIOErrorInFunction(d)
+                << "Unknown force '" << f << "' in forces" << nl
+                << "Valid forces: drag pressureGradient gravity"
+                << " (virtualMass is not implemented yet)" << exit(FatalIOError);
+        }
+    }
+    Info<< "    forces " << forces << " (others are not computed)" << nl;
+    alphaMax_ = readBounded(d, "alphaMax", 0.63, SMALL, 1);
+    if (d.found("subCycles") && d.get<word>("subCycles") != "auto")
+    {
+        subCycles_ = label(readBounded(d, "subCycles", 1, 1, 1e6));
+    }
+    else
+    {
+        Info<< "    subCycles auto (from the MPM stable time step)" << nl;
+    }
+
+    if (drag_) readDrag(mpmDict);
+
+    // Gravity: from constant/g, for both phases, only if listed.
+    const mpm::StepOptions& opts = mpm_.system().options();
+    if (gravity_)
+    {
+        const uniformDimensionedVectorField g
+        (
+            IOobject("g", mesh.time().constant(), mesh, IOobject::MUST_READ, IOobject::NO_WRITE)
+        );
+        g_.value() = g.value();
+    }
+    else
+    {
+        mpm_.system().setGravity({0, 0, 0});
+        Info<< "    no gravity (not in forces)" << nl;
+    }
+    if (opts.massMatrix != mpm::MassMatrix::lumped)
+    {
+        FatalIOErrorInFunction(mpmDict)
+            << "Fluid coupling needs massMatrix lumped" << exit(FatalIOError);
+    }
+
+    // Coupling arrays on the padded lattice; zero on ghosts.
+    auto& c = mpm_.system().coupling();
+    const label nNodes = label(mpm_.system().lattice().nNodes);
+    c.K.assign(nNodes, 0.0);
+    for (int k = 0; k < 3; ++k)
+    {
+        c.U[k].assign(nNodes, 0.0);
+        c.F[k].assign(nNodes, 0.0);
+        c.velocityIntegral[k].assign(nNodes, 0.0);
+    }
+    Info<< endl;
+    updateFluidFraction();
+}
+
+void Foam::fluidCoupling::readDrag(const dictionary& mpmDict)
+{
+    const dictionary& mats = mpmDict.subDict("materials");
+    const dictionary* spec = nullptr;
+    word owner;
+    for (const entry& e : mats)
+    {
+        if (!e.isDict() || !e.dict().isDict("drag")) continue;
+        const dictionary& dd = e.dict().subDict("drag");
+        if (spec && (dd.get<word>("model") != spec->get<word>("model")
+                  || dd.get<scalar>("d") != spec->get<scalar>("d")))
+        {
+            FatalIOErrorInFunction(dd)
+                << "Materials " << owner << " and " << e.keyword() << " have "
+                << "different drag laws or diameters: one drag law per case "
+                << "is supported so far" << exit(FatalIOError);
+        }
+        spec = &dd;
+        owner = e.keyword();
+    }
+    if (!spec)
+    {
+        FatalIOErrorInFunction(mats)
+            << "drag is in coupling forces, but no material has a drag "
+            << "sub-dictionary { model ...; d ...; }" << nl
+            << "Valid drag models: " << mpm::registryNames(mpm::availableDragLaws()).c_str()
+            << exit(FatalIOError);
+    }
+    if (!spec->found("model"))
+    {
+        FatalIOErrorInFunction(*spec)
+            << "Missing keyword model in drag of material " << owner << nl
+            << "Valid drag models: " << mpm::registryNames(mpm::availableDragLaws()).c_str()
+            << exit(FatalIOError);
+    }
+    const word model(spec->get<word>("model"));
+    mpm::Coefficients coeffs;
+    for (const entry& e : *spec)
+    {
+        if (e.keyword() != "model") coeffs[e.keyword()] = spec->get<scalar>(e.keyword());
+    }
+    try
+    {
+        dragLaw_ = mpm::makeDragLaw(model, coeffs);
+    }
+    catch (const std::exception& ex)
+    {
+        FatalIOErrorInFunction(*spec)
+            << "Drag of material " << owner << ": " << ex.what()
+            << exit(FatalIOError);
+    }
+    const scalar h = mpm_.system().lattice().h;
+    Info<< "    drag " << model << " (material " << owner << "), d "
+        << dragLaw_->d() << ", alphaFMin " << dragLaw_->alphaFMin() << nl;
+    if (dragLaw_->d() > h)
+    {
+        WarningInFunction
+            << "Grain diameter d = " << dragLaw_->d() << " is larger than the "
+            << "cell size h = " << h << " (d/h = " << dragLaw_->d()/h << "):"
+            << " volume averaging assumes grains much smaller than cells"
+            << endl;
+    }
+}
+
+void Foam::fluidCoupling::updateFluidFraction()
+{
+    const mpm::MpmSystem& s = mpm_.system();
+    const labelList& node = mpm_.lattice().cellNode();
+    volScalarField& alphaF = fluid_.alpha();
+    label capped = 0;
+    scalar maxAlphaS = 0;
+    label maxCell = -1;
+    forAll(node, celli)
+    {
+        const scalar alphaS = s.grid().volume[node[celli]]/mesh_.V()[celli];
+        if (alphaS > maxAlphaS) { maxAlphaS = alphaS; maxCell = celli; }
+        if (alphaS > alphaMax_) ++capped;
+        alphaF[celli] = mode_ == couplingMode::twoWay ? 1 - min(alphaS, alphaMax_) : 1.0;
+    }
+    alphaF.correctBoundaryConditions();
+    if (capped)
+    {
+        Info<< "alphaMax " << alphaMax_ << " reached at time "
+            << mesh_.time().timeName() << " in " << capped << " cells; max "
+            << "alpha.solid " << maxAlphaS << " at " << mesh_.C()[maxCell] << nl;
+    }
+}
+
+void Foam::fluidCoupling::advanceSolids(scalar dt)
+{
+    mpm::MpmSystem& s = mpm_.system();
+    auto& c = s.coupling();
+    const labelList& node = mpm_.lattice().cellNode();
+    const volVectorField& U = fluid_.U();
+    const scalar rhoF = fluid_.rho().value();
+
+    // Drag coefficient per cell from the state at the start of the step
+    s.mapToGrid();
+    volScalarField& beta = fluid_.beta();
+    if (drag_)
+    {
+        const volScalarField mu(fluid_.mu());
+        forAll(node, celli)
+        {
+            const label I = node[celli];
+            const scalar alphaS = min(s.grid().volume[I]/mesh_.V()[celli], alphaMax_);
+            const vector Us(s.grid().velocity[0][I], s.grid().velocity[1][I], s.grid().velocity[2][I]);
+            beta[celli] = alphaS > 0
+                ? dragLaw_->beta(1 - alphaS, mag(U[celli] - Us), rhoF, mu[celli])
+                : 0;
+        }
+    }
+    const volVectorField gradp(fluid_.gradp());
+    forAll(node, celli)
+    {
+        const label I = node[celli];
+        c.K[I] = drag_ ? beta[celli]*mesh_.V()[celli] : 0;
+        for (int k = 0; k < 3; ++k)
+        {
+            c.U[k][I] = U[celli][k];
+            c.F[k][I] = pressureGradient_ ? -rhoF*gradp[celli][k] : 0;
+        }
+    }
+
+    // Sub-cycle the solids over the fluid step
+    label n = subCycles_;
+    if (n == 0)
+    {
+        const scalar dtMpm = mpm_.deltaT();
+        n = max(label(1), label(std::ceil(dt/dtMpm - 1e-9)));
+    }
+    lastSubCycles_ = n;
+    c.resetIntegral();
+    for (label i = 0; i < n; ++i) mpm_.evolve(dt/n);
+
+    // Hand the solid state to the fluid
+    s.mapToGrid();
+    updateFluidFraction();
+    volVectorField& Us = fluid_.Us();
+    forAll(node, celli)
+    {
+        const label I = node[celli];
+        for (int k = 0; k < 3; ++k) Us[celli][k] = c.velocityIntegral[k][I]/c.time;
+        if (mode_ == couplingMode::oneWay) beta[celli] = 0;
+    }
+    Us.correctBoundaryConditions();
+    beta.correctBoundaryConditions();
+}

@@ -1,0 +1,169 @@
+#include "fluidPhase.H"
+#include "constrainHbyA.H"
+#include "constrainPressure.H"
+#include "adjustPhi.H"
+
+bool Foam::fluidPhase::present(const fvMesh& mesh)
+{
+    return
+        isFile(mesh.time().constant()/"transportProperties")
+     && isFile(mesh.time().timePath()/"U");
+}
+
+Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
+:
+    mesh_(mesh),
+    U_
+    (
+        IOobject("U", mesh.time().timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE),
+        mesh
+    ),
+    p_
+    (
+        IOobject("p", mesh.time().timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE),
+        mesh
+    ),
+    phi_
+    (
+        IOobject("phi", mesh.time().timeName(), mesh, IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
+        fvc::flux(U_)
+    ),
+    alpha_
+    (
+        IOobject("alpha.fluid", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh,
+        dimensionedScalar("one", dimless, 1),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    alphaPhi_
+    (
+        IOobject("alphaPhi.fluid", mesh.time().timeName(), mesh),
+        fvc::interpolate(alpha_)*phi_
+    ),
+    beta_
+    (
+        IOobject("beta", mesh.time().timeName(), mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh,
+        dimensionedScalar(dimDensity/dimTime, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    Us_
+    (
+        IOobject("Us.drag", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    ),
+    transport_(U_, phi_),
+    rho_("rho", dimDensity, transport_)
+{
+    if (rho_.value() <= 0)
+    {
+        FatalIOErrorInFunction(transport_)
+            << "Fluid density rho must be > 0 (constant/transportProperties)"
+            << exit(FatalIOError);
+    }
+    alpha_.oldTime();   // keep the old fluid fraction for d(alphaF)/dt
+    turbulence_ = turbulenceModel::New(alpha_, U_, alphaPhi_, phi_, transport_);
+    setRefCell(p_, pimple.dict(), pRefCell_, pRefValue_);
+    mesh.setFluxRequired(p_.name());
+    Info<< "Fluid: rho " << rho_.value() << ", nu " << average(transport_.nu()).value()
+        << " (constant/transportProperties)" << nl << endl;
+}
+
+void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
+{
+    volVectorField& U = U_;
+    volScalarField& p = p_;
+    const volScalarField& alpha = alpha_;
+    const surfaceScalarField alphaf(fvc::interpolate(alpha));
+    alphaPhi_ = alphaf*phi_;
+    const volScalarField betaByRho(beta_/rho_);
+
+    while (pimple.loop())
+    {
+        fvVectorMatrix UEqn
+        (
+            fvm::ddt(alpha, U) + fvm::div(alphaPhi_, U)
+          - fvm::Sp(fvc::ddt(alpha) + fvc::div(alphaPhi_), U)
+          + turbulence_->divDevRhoReff(U)
+          + fvm::Sp(betaByRho, U)
+        );
+        UEqn.relax();
+
+        const volScalarField rAU(1.0/UEqn.A());
+        const surfaceScalarField rAUf("Dp", fvc::interpolate(rAU));
+
+        // Gravity and the explicit drag on faces, like the pressure gradient
+        const surfaceScalarField phiForces
+        (
+            rAUf*alphaf*(g & mesh_.Sf())
+          + fvc::flux(rAU*betaByRho*Us_)
+        );
+
+        if (pimple.momentumPredictor())
+        {
+            Foam::solve
+            (
+                UEqn
+             ==
+                fvc::reconstruct
+                (
+                    phiForces/rAUf - alphaf*fvc::snGrad(p)*mesh_.magSf()
+                )
+            );
+        }
+
+        while (pimple.correct())
+        {
+            volVectorField HbyA(constrainHbyA(rAU*UEqn.H(), U, p));
+            surfaceScalarField phiHbyA
+            (
+                "phiHbyA",
+                fvc::flux(HbyA) + alphaf*rAUf*fvc::ddtCorr(U, phi_)
+            );
+            if (p.needReference())
+            {
+                adjustPhi(phiHbyA, U, p);
+            }
+            phiHbyA += phiForces;
+
+            // Model A: the flux correction is -aF_f rAU_f grad p
+            const surfaceScalarField Dp("Dp", alphaf*rAUf);
+            constrainPressure(p, U, phiHbyA, Dp);
+
+            while (pimple.correctNonOrthogonal())
+            {
+                fvScalarMatrix pEqn
+                (
+                    fvm::laplacian(alphaf*Dp, p)
+                 ==
+                    fvc::ddt(alpha) + fvc::div(alphaf*phiHbyA)
+                );
+                pEqn.setReference(pRefCell_, pRefValue_);
+                pEqn.solve(mesh_.solver(p.select(pimple.finalInnerIter())));
+
+                if (pimple.finalNonOrthogonalIter())
+                {
+                    phi_ = phiHbyA - pEqn.flux()/alphaf;
+                    p.relax();
+                    U = HbyA + rAU*fvc::reconstruct((phiForces - pEqn.flux()/alphaf)/rAUf);
+                    U.correctBoundaryConditions();
+                }
+            }
+            alphaPhi_ = alphaf*phi_;
+        }
+
+        if (pimple.turbCorr())
+        {
+            transport_.correct();
+            turbulence_->correct();
+        }
+    }
+}
+
+Foam::scalar Foam::fluidPhase::continuityError() const
+{
+    const volScalarField err(fvc::ddt(alpha_) + fvc::div(alphaPhi_));
+    return mesh_.time().deltaTValue()*gSum(mag(err.primitiveField())*mesh_.V())/gSum(mesh_.V());
+}
