@@ -37,7 +37,7 @@ Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
     ),
     alphaPhi_
     (
-        IOobject("alphaPhi.fluid", mesh.time().timeName(), mesh),
+        IOobject("alphaPhi", mesh.time().timeName(), mesh),
         fvc::interpolate(alpha_)*phi_
     ),
     beta_
