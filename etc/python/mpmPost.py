@@ -72,3 +72,32 @@ def read_positions(case, time):
     body = text[text.index("}", text.index("FoamFile")) + 1:]
     rows = re.findall(r"\(\s*(" + _number + r")\s+(" + _number + r")\s+(" + _number + r")\s*\)", body)
     return np.array([[float(a), float(b), float(c)] for a, b, c in rows])
+
+
+def read_internal_field(case, time, name):
+    """internalField of an ASCII volField as a numpy array ((n,) or (n, 3)),
+    a uniform value repeated n times when n is given by a neighbour field."""
+    path = os.path.join(case, time, name)
+    with open(path) as f:
+        text = f.read()
+    m = re.search(r"internalField\s+nonuniform\s+List<\w+>\s*(\d+)\s*\((.*?)\n\)\s*;", text, re.S)
+    if m:
+        n = int(m.group(1))
+        vals = np.array([float(x) for x in re.findall(_number, m.group(2))])
+        return vals.reshape(n, -1).squeeze()
+    m = re.search(r"internalField\s+uniform\s+(\(.*?\)|\S+);", text)
+    vals = [float(x) for x in re.findall(_number, m.group(1))]
+    return np.array(vals if len(vals) > 1 else vals[0])
+
+
+def field_times(case, name):
+    """Time directories (strings, ascending) holding field `name`."""
+    out = []
+    for d in os.listdir(case):
+        try:
+            t = float(d)
+        except ValueError:
+            continue
+        if os.path.isfile(os.path.join(case, d, name)):
+            out.append((t, d))
+    return [d for _, d in sorted(out)]
