@@ -5,9 +5,29 @@
 
 bool Foam::fluidPhase::present(const fvMesh& mesh)
 {
-    return
-        isFile(mesh.time().constant()/"transportProperties")
-     && isFile(mesh.time().timePath()/"U");
+    const fileName tp(mesh.time().constant()/"transportProperties");
+    if (!isFile(tp)) return false;
+
+    // A fluid case must be complete: say what is missing, before reading.
+    for (const word& f : {word("U"), word("p")})
+    {
+        if (!isFile(mesh.time().timePath()/f))
+        {
+            const IOdictionary dict
+            (
+                IOobject("transportProperties", mesh.time().constant(), mesh,
+                    IOobject::MUST_READ, IOobject::NO_WRITE, false)
+            );
+            FatalIOErrorInFunction(dict)
+                << "The case has a fluid (" << tp << ") but no field " << f
+                << " at time " << mesh.time().timeName() << nl
+                << "A fluid case needs " << mesh.time().timeName()
+                << "/U and " << mesh.time().timeName() << "/p; remove "
+                << "constant/transportProperties for a pure MPM case."
+                << exit(FatalIOError);
+        }
+    }
+    return true;
 }
 
 Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
