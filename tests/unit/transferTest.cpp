@@ -147,14 +147,16 @@ TEST(Transfer, APICPreservesAffineField)
 TEST(Transfer, ThreadCountIndependent)
 {
     // Colour-blocked P2G sums each node in a fixed order, so 1 and 2
-    // threads give bitwise-identical points. 20000 points: well above the
-    // size below which loops run serially (worthThreads), so 2 threads do
-    // run in parallel; consistent mass and APIC exercise every kernel.
+    // threads give bitwise-identical points. The serial-loop threshold is
+    // lowered so that 2 threads do run in parallel; consistent mass and
+    // APIC exercise every kernel.
     for (auto shape : allShapes)
     for (auto transfer : {Transfer::picFlip, Transfer::apic})
     {
         std::array<std::vector<Real>, 3> xs[2], vs[2];
         std::array<std::vector<Real>, 6> sig[2];
+        const Index threshold = MpmSystem::parallelThreshold;
+        MpmSystem::parallelThreshold = 1000;   // every loop runs threaded
         for (int run = 0; run < 2; ++run)
         {
             omp_set_num_threads(run + 1);
@@ -168,6 +170,7 @@ TEST(Transfer, ThreadCountIndependent)
             xs[run] = s.particles().x; vs[run] = s.particles().v; sig[run] = s.particles().sigma;
         }
         omp_set_num_threads(2);
+        MpmSystem::parallelThreshold = threshold;
         for (int d = 0; d < 3; ++d)
         {
             EXPECT_EQ(xs[0][d], xs[1][d]) << shapeName(shape);

@@ -33,9 +33,13 @@ void MpmSystem::dispatch(Fn&& f)
     });
 }
 
-// Below this many work items a parallel region costs more than it saves
-// (and under load a barrier can cost a scheduler time slice).
-static inline bool worthThreads(Index n) { return n >= 4096; }
+Index MpmSystem::parallelThreshold = 50000;
+
+// Below MpmSystem::parallelThreshold work items a loop runs serially: a
+// parallel region costs microseconds on an idle machine but a scheduler time
+// slice (milliseconds) when another process holds a core, and small loops
+// gain nothing from two threads.
+static inline bool worthThreads(Index n) { return n >= MpmSystem::parallelThreshold; }
 
 // Runs fn(p) for every point, blocks of one colour in parallel, so that fn
 // may scatter to its stencil's nodes with plain stores (transfer/binning.hpp).

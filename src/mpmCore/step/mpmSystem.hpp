@@ -58,6 +58,9 @@ struct FluidCoupling
 class MpmSystem
 {
 public:
+    // Loops over fewer items than this run on one thread (tests lower it).
+    static Index parallelThreshold;
+
     void setup(const Lattice& lattice, const BoundarySpec& boundary, const StepOptions& options);
 
     Lattice& lattice() { return lattice_; }
