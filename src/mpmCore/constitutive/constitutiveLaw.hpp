@@ -54,6 +54,11 @@ public:
     // elastoplastic laws, the compression energy of the fluid.
     virtual Real storedEnergy(const Real* sigma, const Real* F) const = 0;
 
+    // Whether the law needs the deformation gradient. Stress-free grains do
+    // not: their F is left at identity, so unbounded compaction of a
+    // sediment cannot make it singular.
+    virtual bool needsDeformation() const { return true; }
+
     // Reference (initial) density.
     Real rho0() const { return rho0_; }
 

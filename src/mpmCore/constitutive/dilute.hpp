@@ -23,6 +23,7 @@ public:
     }
     Real waveSpeed(Real) const override { return 0; }
     Real storedEnergy(const Real*, const Real*) const override { return 0; }
+    bool needsDeformation() const override { return false; }
 };
 
 } // namespace mpm

@@ -195,6 +195,7 @@ void MpmSystem::scatterKernel()
     const Lattice& L = lattice_;
     // Momentum is scattered with the mass, or alone (MUSL re-map).
     constexpr bool Momentum = MassMomentum || !Force;
+    const bool grainVolume = options_.constantGrainVolume;
     Real* gm = g.mass.data();
     Real* gv = g.volume.data();
     Real* gp[3] = {g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()};
@@ -205,6 +206,7 @@ void MpmSystem::scatterKernel()
         Stencil<K, D> s;
         s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
         const Real m = P.mass[p], vol = P.volume[p];
+        const Real solidVol = grainVolume ? P.volume0[p] : vol;
         const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
         Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
         if constexpr (Apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
@@ -215,7 +217,7 @@ void MpmSystem::scatterKernel()
             if constexpr (MassMomentum)
             {
                 gm[I] += N*m;
-                gv[I] += N*vol;
+                gv[I] += N*solidVol;
             }
             if constexpr (Momentum)
             {
@@ -584,8 +586,9 @@ void MpmSystem::updateStress(Real dt)
     #pragma omp parallel for schedule(static) reduction(min:firstBad) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
+        const ConstitutiveLaw& law = *materials_[P.material[p]];
         Real Lp[9], Fo[9], Fn[9], sig[6];
-        for (int e = 0; e < 9; ++e) { Lp[e] = L_[e][p]; Fo[e] = P.F[e][p]; }
+        for (int e = 0; e < 9; ++e) { Lp[e] = law.needsDeformation() ? L_[e][p] : 0.0; Fo[e] = P.F[e][p]; }
         // F_{n+1} = (I + dt L) F_n
         for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -598,7 +601,7 @@ void MpmSystem::updateStress(Real dt)
         Real ep = P.eqPlasticStrain[p];
         PointKinematics k{Lp, Fo, Fn, dt};
         PointStress st{sig, &ep};
-        materials_[P.material[p]]->updateStress(k, st);
+        law.updateStress(k, st);
         bool finite = std::isfinite(ep);
         for (int c = 0; c < 6; ++c) finite = finite && std::isfinite(sig[c]);
         for (int e = 0; e < 9; ++e) finite = finite && std::isfinite(Fn[e]);

@@ -74,6 +74,7 @@ public:
     Index stepCount() const { return stepCount_; }
     void setStepCount(Index n) { stepCount_ = n; }
     void setGravity(const std::array<Real, 3>& g) { options_.gravity = g; }
+    void setConstantGrainVolume(bool on) { options_.constantGrainVolume = on; }
 
     // Fluid coupling arrays, sized by the caller (padded nodes); see above.
     FluidCoupling& coupling() { return coupling_; }

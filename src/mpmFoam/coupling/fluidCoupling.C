@@ -63,7 +63,8 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     }
     Info<< "    forces " << forces << " (others are not computed)" << nl;
     alphaMax_ = readBounded(d, "alphaMax", 0.63, SMALL, 1);
-    if (d.found("subCycles") && d.get<word>("subCycles") != "auto")
+    const entry* sc = d.findEntry("subCycles", keyType::LITERAL);
+    if (sc && !(sc->stream()[0].isWord() && sc->stream()[0].wordToken() == "auto"))
     {
         subCycles_ = label(readBounded(d, "subCycles", 1, 1, 1e6));
     }
@@ -75,6 +76,8 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     if (drag_) readDrag(mpmDict);
 
     // Gravity: from constant/g, for both phases, only if listed.
+    // Grains are incompressible: alpha.solid counts their volume m/rho.
+    mpm_.system().setConstantGrainVolume(true);
     const mpm::StepOptions& opts = mpm_.system().options();
     if (gravity_)
     {
@@ -178,6 +181,9 @@ void Foam::fluidCoupling::updateFluidFraction()
     const mpm::MpmSystem& s = mpm_.system();
     const labelList& node = mpm_.lattice().cellNode();
     volScalarField& alphaF = fluid_.alpha();
+    // primitiveFieldRef() keeps the previous fluid fraction as the old time
+    // (d(alphaF)/dt); writing through operator[] alone would not.
+    scalarField& aF = alphaF.primitiveFieldRef();
     label capped = 0;
     scalar maxAlphaS = 0;
     label maxCell = -1;
@@ -186,7 +192,7 @@ void Foam::fluidCoupling::updateFluidFraction()
         const scalar alphaS = s.grid().volume[node[celli]]/mesh_.V()[celli];
         if (alphaS > maxAlphaS) { maxAlphaS = alphaS; maxCell = celli; }
         if (alphaS > alphaMax_) ++capped;
-        alphaF[celli] = mode_ == couplingMode::twoWay ? 1 - min(alphaS, alphaMax_) : 1.0;
+        aF[celli] = mode_ == couplingMode::twoWay ? 1 - min(alphaS, alphaMax_) : 1.0;
     }
     alphaF.correctBoundaryConditions();
     if (capped)

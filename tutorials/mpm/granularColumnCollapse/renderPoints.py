@@ -88,8 +88,9 @@ for p1, p2 in [((0, 0, z), (L, 0, z)), ((L, 0, z), (L, H, z)),
 for p1, p2 in [((0, H0, z), (A0, H0, z)), ((A0, H0, z), (A0, 0, z))]:
     segment(p1, p2, [0.8, 0.1, 0.1], 3)
 
-title = Text(Text="Granular column collapse (Drucker-Prager, phi = 30 deg): "
-                  "%d material points at t = %g s; red: initial column" % (n, tEnd))
+# Optional: output file name and title (the underwater tutorial reuses this)
+label = sys.argv[3] if len(sys.argv) > 3 else "Granular column collapse (Drucker-Prager, phi = 30 deg)"
+title = Text(Text="%s: %d material points at t = %g s; red: initial column" % (label, n, tEnd))
 td = Show(title, view)
 td.Color = [0, 0, 0]
 td.FontSize = 22
@@ -102,6 +103,6 @@ view.CameraViewUp = [0, 1, 0]
 view.CameraParallelProjection = 1
 view.CameraParallelScale = 0.3
 Render(view)
-out = os.path.join(case, "granularColumnCollapse_points.png")
+out = os.path.join(case, sys.argv[2] if len(sys.argv) > 2 else "granularColumnCollapse_points.png")
 SaveScreenshot(out, view, ImageResolution=[1600, 860])
 print("Wrote %s (%d points, t = %g s)" % (out, n, tEnd))

@@ -1,0 +1,134 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Verification: terminal velocity of a dilute grain population (coupling).
+#
+# Case tests/cases/terminalVelocityCase: a 1D vertical water column (0.1 m,
+# 100 cells, bottom wall, open top with p = 0), a cloud of `dilute` glass
+# grains (rho_s 2500, alpha.solid 1e-4) in 0.05 < y < 0.07, drag
+# SchillerNaumann, forces (drag pressureGradient gravity).
+#
+# The reference is computed here, independently of the solver: the
+# Schiller-Naumann terminal velocity solves
+#     18 mu/d^2 (1 + 0.15 Re^0.687) Ut = (rho_s - rho_f) g,  Re = rho_f Ut d/mu
+# (fixed-point iteration, a contraction since the exponent 0.687 < 1).
+# Ut measured = -(grains' centre-of-mass velocity, summary.dat Ucm_y, averaged
+# over the last third of the run) + the fluid velocity the grains see
+# (alpha.solid-weighted mean of U_y at the last write; ~0 in one-way).
+#
+#  1. oneWay, d = 0.2 mm (Re_p = 4.6, tau = 5.6 ms, fluid step 1 ms, run
+#     0.15 s = 27 tau): |Ut/Ut_SN - 1| <= 1 %; the fluid stays at rest.
+#  2. twoWay, same grains: |Ut/Ut_SN - 1| <= 1 % (model A reduces the slip by
+#     alpha.fluid = 1 - 1e-4, invisible at 1 %), and the return flow: in a
+#     1D column closed at the bottom the mixture flux is zero, so inside the
+#     cloud the water rises at U_f = -alpha.s U_s / alpha.f (~alpha.s Ut =
+#     2.3e-6 m/s). Checked within 1 % on the cloud's interior cells (plateau
+#     of alpha.solid, 3 cells away from its smeared edges).
+#  3. Stiff: d = 8.5 um, tau = rho_s d^2/(18 mu) = 1.0e-5 s = 1e-3 x the fluid
+#     step 0.01 s, and one MPM step per fluid step (subCycles 1): stable (no
+#     NaN, |Ucm| bounded), equilibrium slip = Stokes Ut (Re_p = 5e-4; the SN
+#     correction is 0.08 %) within 1 %.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+
+caseSrc="$MPMFOAM_ROOT/tests/cases/terminalVelocityCase"
+rhoS=2500; rhoF=1000; mu=1e-3; g=9.81
+
+# Ut_SN <d> : Schiller-Naumann terminal velocity by fixed-point iteration
+utSN()
+{
+    "$PY" -c "
+rs, rf, mu, g, d = $rhoS, $rhoF, $mu, $g, $1
+ust = (rs - rf)*g*d*d/(18*mu)
+u = ust
+for i in range(500):
+    u = ust/(1 + 0.15*(rf*u*d/mu)**0.687)
+print('%.15g %.15g %.15g' % (u, ust, rf*u*d/mu))"
+}
+
+# newCase <name> <mode> <d> <deltaT> <endTime> <subCycles>
+newCase()
+{
+    local c="$SCRATCH/$1"
+    cp -r "$caseSrc" "$c"
+    sed -i "s/^\( *mode  *\)[A-Za-z]*;/\1$2;/; s/\(model SchillerNaumann; d\) [^;]*;/\1 $3;/; s/^\( *subCycles *\).*/\1$6;/" \
+        "$c/constant/mpmProperties"
+    sed -i "s/^deltaT .*/deltaT          $4;/; s/^endTime .*/endTime         $5;/; s/^writeInterval .*/writeInterval   $5;/" \
+        "$c/system/controlDict"
+    echo "$c"
+}
+
+runCase()   # case -> 0 on success
+{
+    (cd "$1" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
+        && mpmFoam > log.mpmFoam 2>&1)
+}
+
+# measure <case> <endTime> -> "UcmY Ufluid spread UfReturn UfExpected"
+measure()
+{
+    "$PY" - "$1" "$2" <<'PYEOF'
+import sys
+import numpy as np
+import mpmPost
+case, tEnd = sys.argv[1], float(sys.argv[2])
+s = mpmPost.read_summary(case)
+late = s["time"] >= 2*tEnd/3
+uy = s["Uy"][late]
+t = mpmPost.field_times(case, "U")[-1]
+a = mpmPost.read_internal_field(case, t, "alpha.solid")
+U = mpmPost.read_internal_field(case, t, "U")[:, 1]
+Us = mpmPost.read_internal_field(case, t, "U.solid")[:, 1]
+w = a/a.sum()
+Uf = (w*U).sum()
+# Interior of the cloud: alpha.solid on its plateau, 3 cells from the edges
+plateau = np.flatnonzero(a >= (1 - 1e-4)*a.max())
+inner = plateau[3:-3]
+ret = U[inner].mean()
+exp = (-a*Us/(1 - a))[inner].mean()
+print(uy.mean(), Uf, (uy.max() - uy.min())/abs(uy.mean()), ret, exp)
+PYEOF
+}
+
+# 1 and 2: d = 0.2 mm, one-way and two-way
+read -r ut ust re <<< "$(utSN 2e-4)"
+echo "d = 0.2 mm: Schiller-Naumann Ut = $ut m/s (Stokes $ust, Re_p $re)"
+for mode in oneWay twoWay; do
+    c=$(newCase "$mode" "$mode" 2e-4 1e-3 0.15 auto)
+    runCase "$c" || { echo "FAIL: $mode run"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
+    read -r ucm uf spread ret exp <<< "$(measure "$c" 0.15)"
+    echo "$mode: Ucm_y $ucm, fluid U_y seen by the grains $uf, Ucm spread over the last third $spread"
+    check "$mode: steady (Ucm_y varies < 1e-4 over the last third)" "s < 1e-4" s="$spread"
+    check "$mode: Ut = Uf - Ucm_y within 1 % of Schiller-Naumann" "abs((uf - u)/ut - 1) <= 0.01" u="$ucm" uf="$uf" ut="$ut"
+    if [ "$mode" = oneWay ]; then
+        check "oneWay: fluid at rest (|U_f| < 1e-6 Ut)" "abs(uf) < 1e-6*ut" uf="$uf" ut="$ut"
+    else
+        echo "twoWay: return flow inside the cloud $ret m/s, -alpha.s U_s/alpha.f = $exp m/s"
+        check "twoWay: return flow U_f = -alpha.s U_s/alpha.f within 1 %" "abs(r/e - 1) <= 0.01" r="$ret" e="$exp"
+    fi
+done
+
+# 3. Stiff drag: tau = 1e-3 fluid step, one MPM step per fluid step
+read -r ut ust re <<< "$(utSN 8.5e-6)"
+tau=$("$PY" -c "print($rhoS*8.5e-6**2/(18*$mu))")
+echo "d = 8.5 um: tau $tau s (fluid step 0.01 s), Stokes Ut $ust, Schiller-Naumann $ut (Re_p $re)"
+c=$(newCase stiff oneWay 8.5e-6 1e-2 0.2 1)
+if ! runCase "$c"; then
+    if grep -q "subCycles" "$c/log.mpmFoam"; then
+        echo "FAIL: 'subCycles 1;' (a number, as documented in fluidCoupling.H) is rejected:"
+        grep -m1 -B1 -A2 "FATAL" "$c/log.mpmFoam"
+        failures=$((failures + 1))
+        echo "      rerunning with subCycles auto (one sub-cycle here too: dilute grains have no wave speed)"
+        sed -i "s/^\( *subCycles *\).*/\1auto;/" "$c/constant/mpmProperties"
+        (cd "$c" && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: stiff run"; tail -20 "$c/log.mpmFoam"; finish; }
+    else
+        echo "FAIL: stiff run"; tail -20 "$c/log.mpmFoam"; finish
+    fi
+fi
+nsub=$(grep "sub-cycles of deltaT" "$c/log.mpmFoam" | awk '{print $2}' | sort -gu | tail -1)
+check "stiff: one MPM step per fluid step" "n == 1" n="$nsub"
+read -r ucm uf spread ret exp <<< "$(measure "$c" 0.2)"
+maxU=$("$PY" -c "import mpmPost; print(mpmPost.read_summary('$c')['maxU'].max())")
+echo "stiff: Ucm_y $ucm, max |U| over the run $maxU"
+check "stiff: stable (max |U| <= 1.01 Ut_Stokes at every step)" "m <= 1.01*ust" m="$maxU" ust="$ust"
+check "stiff: equilibrium slip = Stokes Ut within 1 %" "abs((uf - u)/ust - 1) <= 0.01" u="$ucm" uf="$uf" ust="$ust"
+finish
