@@ -85,7 +85,9 @@ std::vector<LawInfo> buildRegistry()
             density(), youngModulus(), poissonRatio(),
             required("phi", "friction angle [deg]", 0, 90, false, true),
             optional("c", "cohesion [Pa]", 0.0, 0, inf, false, false),
-            optional("psi", "dilatancy angle [deg], at most phi", 0.0, 0, 90, false, true)
+            optional("psi", "dilatancy angle [deg], at most phi", 0.0, 0, 90, false, true),
+            optional("alphaContact", "solid fraction below which the grains are out of contact "
+                     "and stress-free (0: always in contact) [-]", 0.0, 0, 1, false, true)
         },
         &DruckerPrager::create
     });

@@ -22,6 +22,10 @@ struct PointKinematics
     const Real* Fold;     // deformation gradient at the start of the step
     const Real* Fnew;     // deformation gradient at the end of the step
     Real dt;
+    // Grain volume fraction of the point's parcel at the end of the step,
+    // mass / (rho0 volume): 1/J for a continuum, the local packing for
+    // grains seeded with a solidFraction < 1.
+    Real solidFraction = 1;
 };
 
 struct PointStress

@@ -29,13 +29,15 @@ Real DruckerPrager::planeStrainXi(Real angleDeg)
     return 3.0*std::sqrt(3.0)/planeStrainDenominator(angleDeg);
 }
 
-DruckerPrager::DruckerPrager(Real rho, Real E, Real nu, Real phiDeg, Real c, Real psiDeg)
+DruckerPrager::DruckerPrager(Real rho, Real E, Real nu, Real phiDeg, Real c, Real psiDeg,
+                             Real alphaContact)
 :
     el_(IsotropicElasticity::fromYoungPoisson(E, nu)),
     cohesion_(c),
     eta_(planeStrainEta(phiDeg)),
     xi_(planeStrainXi(phiDeg)),
-    etaBar_(planeStrainEta(psiDeg))
+    etaBar_(planeStrainEta(psiDeg)),
+    alphaContact_(alphaContact)
 {
     rho0_ = rho;
     // The only constraint between parameters; ranges are checked by makeLaw.
@@ -52,7 +54,8 @@ std::unique_ptr<ConstitutiveLaw> DruckerPrager::create(const Coefficients& c)
 {
     return std::make_unique<DruckerPrager>
     (
-        c.at("rho"), c.at("E"), c.at("nu"), c.at("phi"), c.at("c"), c.at("psi")
+        c.at("rho"), c.at("E"), c.at("nu"), c.at("phi"), c.at("c"), c.at("psi"),
+        c.at("alphaContact")
     );
 }
 
@@ -113,6 +116,11 @@ Real DruckerPrager::returnMap(Real* sigma) const
 
 void DruckerPrager::updateStress(const PointKinematics& k, PointStress& s) const
 {
+    if (k.solidFraction < alphaContact_)
+    {
+        for (int a = 0; a < 6; ++a) s.sigma[a] = 0;
+        return;
+    }
     jaumannElasticUpdate(el_, k.L, k.dt, s.sigma);
     const Real dEqPlastic = returnMap(s.sigma);
     if (s.eqPlasticStrain) *s.eqPlasticStrain += dEqPlastic;

@@ -35,7 +35,8 @@ class DruckerPrager : public ConstitutiveLaw
 {
 public:
     // Angles in degrees; requires 0 <= psi <= phi < 90 and c >= 0.
-    DruckerPrager(Real rho, Real E, Real nu, Real phiDeg, Real c, Real psiDeg);
+    DruckerPrager(Real rho, Real E, Real nu, Real phiDeg, Real c, Real psiDeg,
+                  Real alphaContact = 0);
     static std::unique_ptr<ConstitutiveLaw> create(const Coefficients& c);
 
     const char* typeName() const override { return "druckerPrager"; }
@@ -64,6 +65,10 @@ private:
     IsotropicElasticity el_;
     Real cohesion_;
     Real eta_, xi_, etaBar_;
+    // Packing below which the grains are not in contact: the skeleton is
+    // stress-free (expanded beds, suspensions); stress builds again from
+    // zero once it is compacted past it. 0: always in contact.
+    Real alphaContact_;
 };
 
 } // namespace mpm

@@ -1,4 +1,5 @@
 #include "mpmSystem.hpp"
+#include "../constitutive/tensorOps.hpp"
 #include "../transfer/stencil.hpp"
 #include <algorithm>
 #include <cmath>
@@ -196,6 +197,8 @@ void MpmSystem::scatterKernel()
     // Momentum is scattered with the mass, or alone (MUSL re-map).
     constexpr bool Momentum = MassMomentum || !Force;
     const bool grainVolume = options_.constantGrainVolume;
+    std::vector<Real> invRho0(materials_.size());
+    for (std::size_t i = 0; i < materials_.size(); ++i) invRho0[i] = 1.0/materials_[i]->rho0();
     Real* gm = g.mass.data();
     Real* gv = g.volume.data();
     Real* gp[3] = {g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()};
@@ -206,7 +209,7 @@ void MpmSystem::scatterKernel()
         Stencil<K, D> s;
         s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
         const Real m = P.mass[p], vol = P.volume[p];
-        const Real solidVol = grainVolume ? P.volume0[p] : vol;
+        const Real solidVol = grainVolume ? m*invRho0[P.material[p]] : vol;
         const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
         Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
         if constexpr (Apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
@@ -599,7 +602,8 @@ void MpmSystem::updateStress(Real dt)
         }
         for (int c = 0; c < 6; ++c) sig[c] = P.sigma[c][p];
         Real ep = P.eqPlasticStrain[p];
-        PointKinematics k{Lp, Fo, Fn, dt};
+        const Real Jn = tensor::det(Fn);
+        PointKinematics k{Lp, Fo, Fn, dt, P.mass[p]/(law.rho0()*P.volume0[p]*Jn)};
         PointStress st{sig, &ep};
         law.updateStress(k, st);
         bool finite = std::isfinite(ep);

@@ -46,9 +46,10 @@ struct StepOptions
     std::array<Real, 3> gravity{0, 0, 0};
     bool freezePositions = false;     // analysis runs: points do not move
     // Volume a point adds to the lattice's solid volume (alpha.solid): its
-    // current volume J V0 for a continuum solid; its grain volume V0 (=
-    // mass / rho0) for grains in a fluid, which are incompressible: the
-    // skeleton's J changes the local packing, not the grains.
+    // current volume J V0 for a continuum solid; its grain volume mass /
+    // rho0 for grains in a fluid (a point is then a parcel of mixture whose
+    // incompressible grains fill part of it: J changes the packing, not the
+    // grains).
     bool constantGrainVolume = false;
 };
 

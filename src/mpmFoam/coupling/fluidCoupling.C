@@ -185,13 +185,15 @@ void Foam::fluidCoupling::updateFluidFraction()
     // (d(alphaF)/dt); writing through operator[] alone would not.
     scalarField& aF = alphaF.primitiveFieldRef();
     label capped = 0;
+    capped_.setSize(mesh_.nCells());
+    capped_ = false;
     scalar maxAlphaS = 0;
     label maxCell = -1;
     forAll(node, celli)
     {
         const scalar alphaS = s.grid().volume[node[celli]]/mesh_.V()[celli];
         if (alphaS > maxAlphaS) { maxAlphaS = alphaS; maxCell = celli; }
-        if (alphaS > alphaMax_) ++capped;
+        if (alphaS > alphaMax_) { ++capped; capped_[celli] = true; }
         aF[celli] = mode_ == couplingMode::twoWay ? 1 - min(alphaS, alphaMax_) : 1.0;
     }
     alphaF.correctBoundaryConditions();
@@ -253,7 +255,7 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
     // Hand the solid state to the fluid
     s.mapToGrid();
     updateFluidFraction();
-    volVectorField& Us = fluid_.Us();
+    volVectorField Us(fluid_.Us());
     forAll(node, celli)
     {
         const label I = node[celli];
@@ -262,4 +264,5 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
     }
     Us.correctBoundaryConditions();
     beta.correctBoundaryConditions();
+    fluid_.setSolid(Us, capped_);
 }

@@ -74,6 +74,12 @@ Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
         dimensionedVector(dimVelocity, Zero),
         zeroGradientFvPatchVectorField::typeName
     ),
+    alphaPhiSolid_
+    (
+        IOobject("alphaPhi.solid", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimVolume/dimTime, Zero)
+    ),
     transport_(U_, phi_),
     rho_("rho", dimDensity, transport_)
 {
@@ -158,7 +164,7 @@ void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
                 (
                     fvm::laplacian(alphaf*Dp, p)
                  ==
-                    fvc::ddt(alpha) + fvc::div(alphaf*phiHbyA)
+                    fvc::div(alphaf*phiHbyA) + fvc::div(alphaPhiSolid_)
                 );
                 pEqn.setReference(pRefCell_, pRefValue_);
                 pEqn.solve(mesh_.solver(p.select(pimple.finalInnerIter())));
@@ -182,7 +188,32 @@ void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
     }
 }
 
+void Foam::fluidPhase::setSolid(const volVectorField& Us, const boolList& capped)
+{
+    Us_ = Us;
+    alphaPhiSolid_ = fvc::interpolate(1 - alpha_)*fvc::flux(Us_);
+    // Consistent with the cap: the solid flux into a capped cell is zero,
+    // as its fluid fraction cannot fall further (a sediment of overlapping
+    // stress-free grains would otherwise drive fluid out of it).
+    scalarField& f = alphaPhiSolid_.primitiveFieldRef();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    forAll(f, facei)
+    {
+        if ((f[facei] > 0 && capped[nei[facei]]) || (f[facei] < 0 && capped[own[facei]]))
+        {
+            f[facei] = 0;
+        }
+    }
+}
+
 Foam::scalar Foam::fluidPhase::continuityError() const
+{
+    const volScalarField err(fvc::div(alphaPhi_ + alphaPhiSolid_));
+    return mesh_.time().deltaTValue()*gSum(mag(err.primitiveField())*mesh_.V())/gSum(mesh_.V());
+}
+
+Foam::scalar Foam::fluidPhase::alphaTransportError() const
 {
     const volScalarField err(fvc::ddt(alpha_) + fvc::div(alphaPhi_));
     return mesh_.time().deltaTValue()*gSum(mag(err.primitiveField())*mesh_.V())/gSum(mesh_.V());

@@ -158,7 +158,8 @@ Foam::label Foam::seedRegions
         const velocityField velocity(d.subOrEmptyDict("velocity"));
         const symmTensor sigma0(d.getOrDefault<symmTensor>("stress", Zero));
         // Share of the cell the grains fill: a suspension or a packed bed in
-        // a fluid (the points carry the solid volume only).
+        // a fluid. A point is a parcel of mixture: its volume is its share of
+        // the cell, its mass rho solidFraction volume (rho: grain density).
         const scalar solidFraction = readBounded(d, "solidFraction", 1, SMALL, 1, false);
         const scalar rho = materials.rho(mat);
 
@@ -180,7 +181,7 @@ Foam::label Foam::seedRegions
                 {
                     if (L.solved[a]) x[a] += ((idx[a] + 0.5)/ppc[a] - 0.5 + shift[a])*L.h;
                 }
-                cellVol[c] = solidFraction*mesh.cellVolumes()[celli]/perCell;
+                cellVol[c] = mesh.cellVolumes()[celli]/perCell;
                 candidates[c++] = x;
             }
         }
@@ -196,7 +197,7 @@ Foam::label Foam::seedRegions
             const mpm::Index p = points.add
             (
                 {x.x(), x.y(), x.z()}, {v.x(), v.y(), v.z()},
-                rho*cellVol[i], cellVol[i], int(mat)
+                rho*solidFraction*cellVol[i], cellVol[i], int(mat)
             );
             points.sigma[mpm::XX][p] = sigma0.xx();
             points.sigma[mpm::YY][p] = sigma0.yy();
