@@ -83,7 +83,8 @@ void coupled(Time& runTime, fvMesh& mesh, mpmModel& mpm)
         fluid.solve(pimple, coupling.g());
         fluidTime += timer.elapsedTime();
         Info<< "fluid: continuity error " << fluid.continuityError()
-            << ", min alpha.fluid " << gMin(fluid.alpha().primitiveField()) << nl;
+            << ", min alpha.fluid " << gMin(fluid.alpha().primitiveField())
+            << ", alpha transport error " << fluid.alphaTransportError() << nl;
 
         mpm.write();
         runTime.write();
