@@ -674,7 +674,12 @@ Real MpmSystem::maxSignalSpeed() const
     for (Index p = 0; p < n; ++p)
     {
         const Real v2 = P.v[0][p]*P.v[0][p] + P.v[1][p]*P.v[1][p] + P.v[2][p]*P.v[2][p];
-        const Real c = materials_[P.material[p]]->waveSpeed(P.J(p)) + std::sqrt(v2);
+        // The law's wave speed is for its reference density rho0; a parcel
+        // of grains in a fluid is lighter (mass = rho0 solidFraction V0), so
+        // its waves are faster by sqrt(rho0 V0 / mass).
+        const ConstitutiveLaw& law = *materials_[P.material[p]];
+        const Real lighter = std::sqrt(law.rho0()*P.volume0[p]/P.mass[p]);
+        const Real c = law.waveSpeed(P.J(p))*lighter + std::sqrt(v2);
         cmax = std::max(cmax, c);
     }
     return cmax;

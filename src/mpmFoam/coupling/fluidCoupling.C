@@ -109,6 +109,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         c.velocityIntegral[k].assign(nNodes, 0.0);
     }
     Info<< endl;
+    mpm_.system().mapToGrid();      // alpha.solid from the grain volumes
     updateFluidFraction();
 }
 
