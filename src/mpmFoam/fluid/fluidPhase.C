@@ -195,6 +195,10 @@ void Foam::fluidPhase::setSolid(const volVectorField& Us, const boolList& capped
     // Consistent with the cap: the solid flux into a capped cell is zero,
     // as its fluid fraction cannot fall further (a sediment of overlapping
     // stress-free grains would otherwise drive fluid out of it).
+    // Grains never cross the domain boundary (every patch is an MPM wall):
+    // no solid flux there, which also keeps the pressure equation of a
+    // closed box compatible.
+    for (auto& pf : alphaPhiSolid_.boundaryFieldRef()) pf = 0;
     scalarField& f = alphaPhiSolid_.primitiveFieldRef();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();

@@ -12,7 +12,10 @@ import os
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-dry_dir = os.path.join(here, "..", "..", "mpm", "granularColumnCollapse")
+# The dry tutorial (its measuring code and, by default, its results):
+# found through $MPMFOAM_DIR, so a copied case still finds it.
+root = os.environ.get("MPMFOAM_DIR", os.path.join(here, "..", "..", ".."))
+dry_dir = os.path.join(root, "tutorials", "mpm", "granularColumnCollapse")
 spec = importlib.util.spec_from_file_location("plotProfile", os.path.join(dry_dir, "plotProfile.py"))
 profile = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(profile)
