@@ -25,17 +25,22 @@ def read_summary(case="."):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
-def times(case="."):
-    """Write times that hold a materialPoints cloud, ascending."""
+def _time_dirs(case, has):
+    """Time directories (strings, ascending) for which has(path) is true."""
     out = []
     for d in os.listdir(case):
         try:
             t = float(d)
         except ValueError:
             continue
-        if os.path.isdir(os.path.join(case, d, "lagrangian", "materialPoints")):
+        if has(os.path.join(case, d)):
             out.append((t, d))
     return [d for _, d in sorted(out)]
+
+
+def times(case="."):
+    """Write times that hold a materialPoints cloud, ascending."""
+    return _time_dirs(case, lambda p: os.path.isdir(os.path.join(p, "lagrangian", "materialPoints")))
 
 
 _number = r"[-+0-9.eEinfINFnaN]+"
@@ -92,12 +97,4 @@ def read_internal_field(case, time, name):
 
 def field_times(case, name):
     """Time directories (strings, ascending) holding field `name`."""
-    out = []
-    for d in os.listdir(case):
-        try:
-            t = float(d)
-        except ValueError:
-            continue
-        if os.path.isfile(os.path.join(case, d, name)):
-            out.append((t, d))
-    return [d for _, d in sorted(out)]
+    return _time_dirs(case, lambda p: os.path.isfile(os.path.join(p, name)))

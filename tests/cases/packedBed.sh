@@ -16,14 +16,5 @@ c=$(copyTutorial multiphase/packedBed bed)
 ratio=$(sed -n 's/.*inside the bed .* ratio \([0-9.e+-]*\).*/\1/p' "$c/log.plot")
 check "Ergun gradient inside the bed within 1 %" "abs(r - 1) <= 0.01" r="$ratio"
 
-cont=$(grep "continuity error" "$c/log.mpmFoam" | awk '{print $4}' | tr -d , | sort -g | tail -1)
-check "fluid continuity error at solver tolerance" "e <= 1e-10" e="$cont"
-
-read -r m0 m1 amin <<< "$("$PY" -c "
-import mpmPost
-ts = mpmPost.times('$c'); a = mpmPost.field_times('$c', 'alpha.fluid')
-m0 = mpmPost.read_cloud_field('$c', ts[0], 'mass').sum(); m1 = mpmPost.read_cloud_field('$c', ts[-1], 'mass').sum()
-print(m0, m1, min(mpmPost.read_internal_field('$c', t, 'alpha.fluid').min() for t in a))")"
-check "solid mass conserved" "abs(m1 - m0) <= 1e-12*m0" m0="$m0" m1="$m1"
-check "alpha.fluid >= 1 - alphaMax" "a >= 1 - 0.63 - 1e-12" a="$amin"
+coupledInvariants "$c" 0.63
 finish

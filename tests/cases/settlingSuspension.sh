@@ -32,14 +32,5 @@ echo "settlingSuspension: mpmFoam run $(( $(date +%s) - start )) s"
 ratio=$(sed -n 's/^settling velocity ratio measured\/Richardson-Zaki \([0-9.eE+-]*\).*/\1/p' "$c/log.plot")
 check "settling velocity within 5 % of Richardson-Zaki (Rowe n)" "abs(r - 1) <= 0.05" r="${ratio:-nan}"
 
-cont=$(grep "continuity error" "$c/log.mpmFoam" | awk '{print $4}' | tr -d , | sort -g | tail -1)
-check "fluid continuity error <= 1e-10" "e <= 1e-10" e="${cont:-nan}"
-
-read -r m0 m1 amin <<< "$("$PY" -c "
-import mpmPost
-ts = mpmPost.times('$c'); a = mpmPost.field_times('$c', 'alpha.fluid')
-m0 = mpmPost.read_cloud_field('$c', ts[0], 'mass').sum(); m1 = mpmPost.read_cloud_field('$c', ts[-1], 'mass').sum()
-print(m0, m1, min(mpmPost.read_internal_field('$c', t, 'alpha.fluid').min() for t in a))")"
-check "solid mass conserved to 1e-12" "abs(m1 - m0) <= 1e-12*m0" m0="$m0" m1="$m1"
-check "alpha.solid in the fluid <= alphaMax (alpha.fluid >= 1 - 0.63)" "a >= 1 - 0.63 - 1e-12" a="$amin"
+coupledInvariants "$c" 0.63
 finish

@@ -32,14 +32,13 @@ Real DruckerPrager::planeStrainXi(Real angleDeg)
 DruckerPrager::DruckerPrager(Real rho, Real E, Real nu, Real phiDeg, Real c, Real psiDeg,
                              Real alphaContact)
 :
-    el_(IsotropicElasticity::fromYoungPoisson(E, nu)),
+    IsotropicElasticLaw(rho, E, nu),
     cohesion_(c),
     eta_(planeStrainEta(phiDeg)),
     xi_(planeStrainXi(phiDeg)),
     etaBar_(planeStrainEta(psiDeg)),
     alphaContact_(alphaContact)
 {
-    rho0_ = rho;
     // The only constraint between parameters; ranges are checked by makeLaw.
     if (!(psiDeg <= phiDeg))
     {

@@ -31,7 +31,7 @@
 
 namespace mpm {
 
-class DruckerPrager : public ConstitutiveLaw
+class DruckerPrager : public IsotropicElasticLaw
 {
 public:
     // Angles in degrees; requires 0 <= psi <= phi < 90 and c >= 0.
@@ -51,8 +51,6 @@ public:
     Real etaBar() const { return etaBar_; }
     Real storedEnergy(const Real* sigma, const Real* F) const override;
 
-    const IsotropicElasticity& elasticity() const { return el_; }
-
     // Plane-strain Mohr-Coulomb match, eta(phi) (= xi(phi) tan(phi)).
     static Real planeStrainEta(Real angleDeg);
     static Real planeStrainXi(Real angleDeg);
@@ -62,7 +60,6 @@ private:
     // equivalent plastic strain increment (0 if the trial is admissible).
     Real returnMap(Real* sigma) const;
 
-    IsotropicElasticity el_;
     Real cohesion_;
     Real eta_, xi_, etaBar_;
     // Packing below which the grains are not in contact: the skeleton is

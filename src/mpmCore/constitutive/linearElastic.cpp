@@ -35,10 +35,8 @@ void jaumannElasticUpdate(const IsotropicElasticity& el, const Real* L, Real dt,
 
 LinearElastic::LinearElastic(Real rho, Real E, Real nu)
 :
-    el_(IsotropicElasticity::fromYoungPoisson(E, nu))
-{
-    rho0_ = rho;
-}
+    IsotropicElasticLaw(rho, E, nu)
+{}
 
 std::unique_ptr<ConstitutiveLaw> LinearElastic::create(const Coefficients& c)
 {

@@ -32,7 +32,24 @@ struct IsotropicElasticity
 // place) over one step with velocity gradient L (row-major 3x3).
 void jaumannElasticUpdate(const IsotropicElasticity& el, const Real* L, Real dt, Real* sigma);
 
-class LinearElastic : public ConstitutiveLaw
+// Base of the laws whose elasticity is isotropic, given by rho, E and nu.
+class IsotropicElasticLaw : public ConstitutiveLaw
+{
+public:
+    const IsotropicElasticity& elasticity() const { return el_; }
+
+protected:
+    IsotropicElasticLaw(Real rho, Real E, Real nu)
+    :
+        el_(IsotropicElasticity::fromYoungPoisson(E, nu))
+    {
+        rho0_ = rho;
+    }
+
+    IsotropicElasticity el_;
+};
+
+class LinearElastic : public IsotropicElasticLaw
 {
 public:
     LinearElastic(Real rho, Real E, Real nu);
@@ -46,10 +63,6 @@ public:
 
     Real storedEnergy(const Real* sigma, const Real* F) const override;
 
-    const IsotropicElasticity& elasticity() const { return el_; }
-
-private:
-    IsotropicElasticity el_;
 };
 
 } // namespace mpm

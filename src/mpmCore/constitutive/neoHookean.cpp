@@ -7,10 +7,8 @@ namespace mpm {
 
 NeoHookean::NeoHookean(Real rho, Real E, Real nu)
 :
-    el_(IsotropicElasticity::fromYoungPoisson(E, nu))
-{
-    rho0_ = rho;
-}
+    IsotropicElasticLaw(rho, E, nu)
+{}
 
 std::unique_ptr<ConstitutiveLaw> NeoHookean::create(const Coefficients& c)
 {

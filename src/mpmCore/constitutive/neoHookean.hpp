@@ -11,7 +11,7 @@
 
 namespace mpm {
 
-class NeoHookean : public ConstitutiveLaw
+class NeoHookean : public IsotropicElasticLaw
 {
 public:
     NeoHookean(Real rho, Real E, Real nu);
@@ -29,10 +29,6 @@ public:
     // W = mu/2 (tr(F F^T) - 3) - mu ln J + lambda/2 (ln J)^2
     Real storedEnergy(const Real* sigma, const Real* F) const override;
 
-    const IsotropicElasticity& elasticity() const { return el_; }
-
-private:
-    IsotropicElasticity el_;
 };
 
 } // namespace mpm
