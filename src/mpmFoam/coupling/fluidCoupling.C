@@ -231,13 +231,32 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         }
     }
     const volVectorField gradp(fluid_.gradp());
+    // Two-way, with buoyancy: the fluid's pressure gradient carries the drag
+    // reaction, aF grad p ~ ... + beta (Us - U)/rho, so a solid velocity
+    // change dv changes the grains' force -aS rho grad p by -(aS/aF) beta dv.
+    // Taking that part implicitly too (a linearised pressure response, as in
+    // partial elimination) keeps the lagged grad p from feeding the drag
+    // back explicitly, which made lifting beds oscillate:
+    //   K = beta V (1 + aS/aF),  K U_c = beta V U + aS V (beta/aF) v0
+    // with v0 the solid velocity at the start of the step (exact at steady
+    // state, where v = v0).
+    const bool implicitPressure = drag_ && pressureGradient_ && mode_ == couplingMode::twoWay;
     forAll(node, celli)
     {
         const label I = node[celli];
-        c.K[I] = drag_ ? beta[celli]*mesh_.V()[celli] : 0;
+        const scalar V = mesh_.V()[celli];
+        const scalar KDrag = drag_ ? beta[celli]*V : 0;
+        scalar KExtra = 0;
+        if (implicitPressure)
+        {
+            const scalar aS = min(s.grid().volume[I]/V, alphaMax_);
+            KExtra = KDrag*aS/(1 - aS);
+        }
+        c.K[I] = KDrag + KExtra;
         for (int k = 0; k < 3; ++k)
         {
-            c.U[k][I] = U[celli][k];
+            const scalar v0 = s.grid().velocity[k][I];
+            c.U[k][I] = c.K[I] > 0 ? (KDrag*U[celli][k] + KExtra*v0)/c.K[I] : U[celli][k];
             c.F[k][I] = pressureGradient_ ? -rhoF*gradp[celli][k] : 0;
         }
     }
