@@ -33,11 +33,4 @@ void Lattice::finalise()
     nRealNodes = Index(nCells[0])*nCells[1]*nCells[2];
 }
 
-Real Lattice::cellVolume() const
-{
-    Real v = 1;
-    for (int a = 0; a < 3; ++a) v *= solved[a] ? h : 1.0;
-    return v;
-}
-
 } // namespace mpm

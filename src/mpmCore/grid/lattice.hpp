@@ -51,7 +51,6 @@ struct Lattice
     }
 
     Real length(int axis) const { return nCells[axis]*h; }
-    Real cellVolume() const;   // h^dim x unit thickness in unsolved dirs
 };
 
 } // namespace mpm

@@ -151,7 +151,7 @@ void MpmSystem::stepImpl(Real dt)
     }
     {
         ScopedTimer t(timers_.g2p);
-        movePoints(dt);
+        movePoints();
     }
 }
 
@@ -625,9 +625,9 @@ void MpmSystem::updateStress(Real dt)
     }
 }
 
-void MpmSystem::movePoints(Real dt)
+// Moves every point by the displacement G2P stored (dt already in it).
+void MpmSystem::movePoints()
 {
-    (void)dt;
     auto& P = particles_;
     const Lattice& L = lattice_;
     const Index n = P.size();

@@ -72,7 +72,6 @@ public:
     const GridState& grid() const { return grid_; }
     const StepTimers& timers() const { return timers_; }
     Index stepCount() const { return stepCount_; }
-    void setStepCount(Index n) { stepCount_ = n; }
     void setGravity(const std::array<Real, 3>& g) { options_.gravity = g; }
     void setConstantGrainVolume(bool on) { options_.constantGrainVolume = on; }
 
@@ -123,7 +122,7 @@ private:
     template<class K, int D> void massToVelocity(std::array<std::vector<Real>, 3>& v);
     void applyFriction(std::array<std::vector<Real>, 3>& v) const;
     void updateStress(Real dt);
-    void movePoints(Real dt);
+    void movePoints();
 
     Lattice lattice_;
     Boundary boundary_;

@@ -214,8 +214,9 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
     const volVectorField& U = fluid_.U();
     const scalar rhoF = fluid_.rho().value();
 
-    // Drag coefficient per cell from the state at the start of the step
-    s.mapToGrid();
+    // Drag coefficient per cell from the state at the start of the step: the
+    // lattice already holds it (mapped at the end of the previous step, or
+    // by the constructor), so no P2G is repeated here.
     volScalarField& beta = fluid_.beta();
     if (drag_)
     {
