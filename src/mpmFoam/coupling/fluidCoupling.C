@@ -232,32 +232,37 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         }
     }
     const volVectorField gradp(fluid_.gradp());
-    // Two-way, with buoyancy: the fluid's pressure gradient carries the drag
-    // reaction, aF grad p ~ ... + beta (Us - U)/rho, so a solid velocity
-    // change dv changes the grains' force -aS rho grad p by -(aS/aF) beta dv.
-    // Taking that part implicitly too (a linearised pressure response, as in
-    // partial elimination) keeps the lagged grad p from feeding the drag
-    // back explicitly, which made lifting beds oscillate:
-    //   K = beta V (1 + aS/aF),  K U_c = beta V U + aS V (beta/aF) v0
-    // with v0 the solid velocity at the start of the step (exact at steady
-    // state, where v = v0).
-    const bool implicitPressure = drag_ && pressureGradient_ && mode_ == couplingMode::twoWay;
+    // The fluid's response to the solids, taken implicitly (a linearised
+    // partial elimination). Over the fluid step U and grad p are frozen,
+    // but a change dv of the solid velocity would change both:
+    //  * twoWay: the mixture flux aS v + aF U is divergence-free and set by
+    //    the last pressure solve; holding it, rather than U, fixed gives
+    //    dU = -(aS/aF) dv, so the slip changes by -dv/aF;
+    //  * with buoyancy: the fluid's grad p carries the drag reaction,
+    //    aF grad p ~ -beta (U - Us)/rho, so the grains' force
+    //    -aS rho grad p changes by (aS/aF) beta d(slip).
+    // With both, d(force)/dv = -beta V/aF^2, which is K below, and
+    //   K U_c = beta V U + (K - beta V) v0
+    // (v0: solid velocity at the start of the step) leaves the steady state
+    // unchanged, where v = v0. Freezing U alone made the next fluid step
+    // undo the grains' motion with gain -aS/aF: lifting beds (aS ~ 0.5)
+    // oscillated every fluid step (docs/coupling.md).
+    const bool volumeCoupled = mode_ == couplingMode::twoWay;
+    const bool pressureResponse = pressureGradient_ && mode_ != couplingMode::oneWay;
     forAll(node, celli)
     {
         const label I = node[celli];
         const scalar V = mesh_.V()[celli];
         const scalar KDrag = drag_ ? beta[celli]*V : 0;
-        scalar KExtra = 0;
-        if (implicitPressure)
-        {
-            const scalar aS = min(s.grid().volume[I]/V, alphaMax_);
-            KExtra = KDrag*aS/(1 - aS);
-        }
-        c.K[I] = KDrag + KExtra;
+        const scalar aS = min(s.grid().volume[I]/V, alphaMax_);
+        const scalar aF = volumeCoupled ? 1 - aS : 1;
+        const scalar slipPerDv = volumeCoupled ? 1/aF : 1;
+        const scalar K = KDrag*slipPerDv*(1 + (pressureResponse ? aS/aF : 0));
+        c.K[I] = K;
         for (int k = 0; k < 3; ++k)
         {
             const scalar v0 = s.grid().velocity[k][I];
-            c.U[k][I] = c.K[I] > 0 ? (KDrag*U[celli][k] + KExtra*v0)/c.K[I] : U[celli][k];
+            c.U[k][I] = K > 0 ? (KDrag*U[celli][k] + (K - KDrag)*v0)/K : U[celli][k];
             c.F[k][I] = pressureGradient_ ? -rhoF*gradp[celli][k] : 0;
         }
     }

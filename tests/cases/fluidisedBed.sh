@@ -7,25 +7,26 @@
 # (plotFluidisedBed.py --no-plot).
 #
 #  1. Fluidised steps (Ergun of the packed bed > 1.1 W): dP = W within 5 %
-#     each, W = (rho_s - rho_f) g alphaS0 L0. Measured 0.98 W. The drop
-#     sags with time once the bed stops expanding (the druckerPrager
-#     skeleton locks at any packing and hands part of the weight to the
-#     plate: README), hence short steps and 5 %.
-#  2. Fixed-bed steps (Ergun < 0.9 W): dP = Ergun(alphaS0, L0) within 10 %.
+#     each, W = (rho_s - rho_f) g alphaS0 L0 (measured 0.983-0.997 W).
+#  2. No oscillation: every fluid step from 0.4 s after a fluidised step
+#     starts is within 5 % of W (measured within 1.8 %). Before the
+#     frozen-mixture-flux response (docs/coupling.md) the mean of one step
+#     met 1. while its record swung by +-1e5 Pa; this catches that.
+#  3. Fixed-bed steps (Ergun < 0.9 W): dP = Ergun(alphaS0, L0) within 10 %.
 #     Measured -7.4 %, the same at every velocity: inside the bed the
 #     gradient is Ergun's (packedBed.sh), the deficit is the bed's top edge,
 #     smeared over the B-spline support (+-2h) where Ergun's aS^2/aF^3 is
 #     superlinear; first order in h (-3.7 % at h = 2.5 mm).
-#  3. U_mf where the Ergun fit of the fixed-bed points meets the plateau:
-#     within 10 % of Ergun's U_mf at alphaS0 (measured +6 %, the sum of 1
-#     and 2). Wen-Yu's correlation is printed for comparison only (an
-#     empirical fit that implies a looser packing than 0.6: 2.19 mm/s).
-#  4. Solid mass: sum of the cloud masses, first vs last time, to 1e-12.
-#  5. alpha.fluid >= 1 - alphaMax in every written field.
-#  6. Fluid continuity error (log) < 1e-8 every step (measured ~2e-10 max,
+#  4. U_mf where the Ergun fit of the fixed-bed points meets the plateau:
+#     within 10 % of Ergun's U_mf at alphaS0 (measured +6.9 %, from 3.).
+#     Wen-Yu's correlation (+-34 % scatter in Wen & Yu 1966) is printed for
+#     comparison only: 2.19 mm/s, simulated/Wen-Yu 1.245.
+#  5. Solid mass: sum of the cloud masses, first vs last time, to 1e-12.
+#  6. alpha.fluid >= 1 - alphaMax in every written field.
+#  7. Fluid continuity error (log) < 1e-8 every step (measured ~2e-10 max,
 #     at the inflow ramps; ~1e-15 otherwise).
 #------------------------------------------------------------------------------
-. "$(dirname "$0")/../caseTestFunctions"
+. "$(dirname "$0")/caseTestFunctions"
 
 c=$(copyTutorial multiphase/fluidisedBed fluidisedBed)
 start=$(date +%s)
@@ -40,6 +41,7 @@ val() { echo "$summary" | tr ' ' '\n' | sed -n "s/^$1=//p"; }
 
 check "both regimes covered (>= 2 fixed, >= 2 fluidised steps)" "a >= 2 and b >= 2" a="$(val nFixed)" b="$(val nFluid)"
 check "fluidised dP = W within 5% (every fluidised step)" "e <= 0.05" e="$(val plateauErrMaxAbs)"
+check "fluidised dP = W within 5% at every fluid step once settled" "e <= 0.05" e="$(val plateauDevMaxAbs)"
 check "fixed-bed dP = Ergun within 10% (every fixed step)" "e <= 0.10" e="$(val ergunErrMaxAbs)"
 check "U_mf (simulated) within 10% of Ergun's U_mf" "abs(s/e - 1) <= 0.10" s="$(val UmfSim)" e="$(val UmfErgun)"
 echo "U_mf simulated / Wen-Yu = $("$PY" -c "print('%.3f' % ($(val UmfSim)/$(val UmfWenYu)))") (not asserted)"
