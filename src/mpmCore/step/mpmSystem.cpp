@@ -91,6 +91,37 @@ void MpmSystem::mapToGrid()
     });
 }
 
+void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
+{
+    out.assign(materials_.size(), std::vector<Real>(lattice_.nNodes, 0.0));
+    std::vector<Real> invRho0(materials_.size());
+    for (std::size_t i = 0; i < materials_.size(); ++i) invRho0[i] = 1.0/materials_[i]->rho0();
+    const auto& P = particles_;
+    dispatch([&](auto k, auto d)
+    {
+        using K = decltype(k);
+        constexpr int D = decltype(d)::value;
+        binning_.build(lattice_, particles_);
+        forEachPointColoured([&](Index p)
+        {
+            Stencil<K, D> s;
+            s.compute(lattice_, P.x[0][p], P.x[1][p], P.x[2][p]);
+            const int m = P.material[p];
+            const Real v = P.mass[p]*invRho0[m];
+            Real* o = out[m].data();
+            s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { o[I] += N*v; });
+        });
+    });
+    for (const auto& gh : boundary_.ghosts())
+    {
+        for (auto& o : out) o[gh.image] += o[gh.ghost];
+    }
+    for (const auto& gh : boundary_.ghosts())
+    {
+        for (auto& o : out) o[gh.ghost] = o[gh.image];
+    }
+}
+
 template<class K, int D>
 void MpmSystem::stepImpl(Real dt)
 {

@@ -96,6 +96,13 @@ public:
     // and sets grid().velocity; for output at any time.
     void mapToGrid();
 
+    // Grain volume (mass/rho0) of each material's points, spread to the
+    // nodes with the shape functions and folded from the ghosts like the
+    // grid volume: out[material][node]. The sum over materials is
+    // grid().volume after mapToGrid() with constant grain volume. For
+    // coupling models that differ per material (drag); one extra P2G.
+    void materialGrainVolume(std::vector<std::vector<Real>>& out);
+
     // Number of points outside the lattice box (seeding checks).
     Index countOutside() const;
 

@@ -116,24 +116,64 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
 void Foam::fluidCoupling::readDrag(const dictionary& mpmDict)
 {
     const dictionary& mats = mpmDict.subDict("materials");
-    const dictionary* spec = nullptr;
-    word owner;
-    for (const entry& e : mats)
+    const wordList& names = mpm_.materials().names();
+    const scalar h = mpm_.system().lattice().h;
+    dragLaws_.assign(names.size(), nullptr);
+    // (model, coefficients) of each distinct law, to share its instance
+    std::vector<std::pair<word, mpm::Coefficients>> specs;
+    std::vector<std::shared_ptr<const mpm::DragLaw>> laws;
+    forAll(names, i)
     {
-        if (!e.isDict() || !e.dict().isDict("drag")) continue;
-        const dictionary& dd = e.dict().subDict("drag");
-        if (spec && (dd.get<word>("model") != spec->get<word>("model")
-                  || dd.get<scalar>("d") != spec->get<scalar>("d")))
+        const dictionary& md = mats.subDict(names[i]);
+        if (!md.isDict("drag"))
+        {
+            Info<< "    material " << names[i] << ": no drag" << nl;
+            continue;
+        }
+        const dictionary& dd = md.subDict("drag");
+        if (!dd.found("model"))
         {
             FatalIOErrorInFunction(dd)
-                << "Materials " << owner << " and " << e.keyword() << " have "
-                << "different drag laws or diameters: one drag law per case "
-                << "is supported so far" << exit(FatalIOError);
+                << "Missing keyword model in drag of material " << names[i] << nl
+                << "Valid drag models: " << mpm::registryNames(mpm::availableDragLaws()).c_str()
+                << exit(FatalIOError);
         }
-        spec = &dd;
-        owner = e.keyword();
+        const word model(dd.get<word>("model"));
+        mpm::Coefficients coeffs;
+        for (const entry& e : dd)
+        {
+            if (e.keyword() != "model") coeffs[e.keyword()] = dd.get<scalar>(e.keyword());
+        }
+        std::size_t k = 0;
+        while (k < specs.size() && !(specs[k].first == model && specs[k].second == coeffs)) ++k;
+        if (k == specs.size())
+        {
+            try
+            {
+                laws.emplace_back(mpm::makeDragLaw(model, coeffs));
+            }
+            catch (const std::exception& ex)
+            {
+                FatalIOErrorInFunction(dd)
+                    << "Drag of material " << names[i] << ": " << ex.what()
+                    << exit(FatalIOError);
+            }
+            specs.emplace_back(model, coeffs);
+        }
+        dragLaws_[i] = laws[k];
+        const mpm::DragLaw& law = *laws[k];
+        Info<< "    material " << names[i] << ": drag " << model << ", d "
+            << law.d() << ", alphaFMin " << law.alphaFMin() << nl;
+        if (law.d() > h)
+        {
+            WarningInFunction
+                << "Grain diameter d = " << law.d() << " of material "
+                << names[i] << " is larger than the cell size h = " << h
+                << " (d/h = " << law.d()/h << "): volume averaging assumes "
+                << "grains much smaller than cells" << endl;
+        }
     }
-    if (!spec)
+    if (laws.empty())
     {
         FatalIOErrorInFunction(mats)
             << "drag is in coupling forces, but no material has a drag "
@@ -141,39 +181,46 @@ void Foam::fluidCoupling::readDrag(const dictionary& mpmDict)
             << "Valid drag models: " << mpm::registryNames(mpm::availableDragLaws()).c_str()
             << exit(FatalIOError);
     }
-    if (!spec->found("model"))
+    singleDragLaw_ = true;
+    for (const auto& l : dragLaws_) singleDragLaw_ = singleDragLaw_ && l == dragLaws_[0];
+    if (!singleDragLaw_)
     {
-        FatalIOErrorInFunction(*spec)
-            << "Missing keyword model in drag of material " << owner << nl
-            << "Valid drag models: " << mpm::registryNames(mpm::availableDragLaws()).c_str()
-            << exit(FatalIOError);
+        Info<< "    beta per cell: the materials' laws weighted by their "
+            << "share of the grain volume" << nl;
     }
-    const word model(spec->get<word>("model"));
-    mpm::Coefficients coeffs;
-    for (const entry& e : *spec)
+}
+
+void Foam::fluidCoupling::updateBeta()
+{
+    mpm::MpmSystem& s = mpm_.system();
+    const labelList& node = mpm_.lattice().cellNode();
+    const volVectorField& U = fluid_.U();
+    const scalar rhoF = fluid_.rho().value();
+    const volScalarField mu(fluid_.mu());
+    volScalarField& beta = fluid_.beta();
+    if (!singleDragLaw_) s.materialGrainVolume(materialVolume_);
+    forAll(node, celli)
     {
-        if (e.keyword() != "model") coeffs[e.keyword()] = spec->get<scalar>(e.keyword());
-    }
-    try
-    {
-        dragLaw_ = mpm::makeDragLaw(model, coeffs);
-    }
-    catch (const std::exception& ex)
-    {
-        FatalIOErrorInFunction(*spec)
-            << "Drag of material " << owner << ": " << ex.what()
-            << exit(FatalIOError);
-    }
-    const scalar h = mpm_.system().lattice().h;
-    Info<< "    drag " << model << " (material " << owner << "), d "
-        << dragLaw_->d() << ", alphaFMin " << dragLaw_->alphaFMin() << nl;
-    if (dragLaw_->d() > h)
-    {
-        WarningInFunction
-            << "Grain diameter d = " << dragLaw_->d() << " is larger than the "
-            << "cell size h = " << h << " (d/h = " << dragLaw_->d()/h << "):"
-            << " volume averaging assumes grains much smaller than cells"
-            << endl;
+        const label I = node[celli];
+        const scalar volume = s.grid().volume[I];
+        const scalar alphaS = min(volume/mesh_.V()[celli], alphaMax_);
+        beta[celli] = 0;
+        if (alphaS <= 0) continue;
+        const vector Us(s.grid().velocity[0][I], s.grid().velocity[1][I], s.grid().velocity[2][I]);
+        const scalar slip = mag(U[celli] - Us);
+        if (singleDragLaw_)
+        {
+            beta[celli] = dragLaws_[0]->beta(1 - alphaS, slip, rhoF, mu[celli]);
+            continue;
+        }
+        forAll(dragLaws_, m)
+        {
+            const scalar share = materialVolume_[m][I]/volume;
+            if (dragLaws_[m] && share > 0)
+            {
+                beta[celli] += share*dragLaws_[m]->beta(1 - alphaS, slip, rhoF, mu[celli]);
+            }
+        }
     }
 }
 
@@ -218,19 +265,7 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
     // lattice already holds it (mapped at the end of the previous step, or
     // by the constructor), so no P2G is repeated here.
     volScalarField& beta = fluid_.beta();
-    if (drag_)
-    {
-        const volScalarField mu(fluid_.mu());
-        forAll(node, celli)
-        {
-            const label I = node[celli];
-            const scalar alphaS = min(s.grid().volume[I]/mesh_.V()[celli], alphaMax_);
-            const vector Us(s.grid().velocity[0][I], s.grid().velocity[1][I], s.grid().velocity[2][I]);
-            beta[celli] = alphaS > 0
-                ? dragLaw_->beta(1 - alphaS, mag(U[celli] - Us), rhoF, mu[celli])
-                : 0;
-        }
-    }
+    if (drag_) updateBeta();
     const volVectorField gradp(fluid_.gradp());
     // The fluid's response to the solids, taken implicitly (a linearised
     // partial elimination). Over the fluid step U and grad p are frozen,
