@@ -33,7 +33,7 @@ fi
 c=$(freshCopy unknownForce)
 sed -i 's/forces      (drag pressureGradient);/forces      (drag lift);/' "$(props "$c")"
 expectFailure "unknown coupling force" "Unknown force 'lift' in forces" runIn "$c" mpmFoam
-expectFailure "coupling forces listed" "Valid forces: drag pressureGradient gravity" runIn "$c" mpmFoam
+expectFailure "coupling forces listed" "Valid forces: drag pressureGradient gravity virtualMass" runIn "$c" mpmFoam
 
 c=$(freshCopy unknownMode)
 sed -i 's/mode        twoWay;/mode        threeWay;/' "$(props "$c")"

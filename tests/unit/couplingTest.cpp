@@ -76,3 +76,56 @@ TEST(FluidCoupling, RefusedWithConsistentMass)
     s.coupling().K.assign(s.lattice().nNodes, 1.0);
     EXPECT_THROW(s.step(1e-3), std::invalid_argument);
 }
+
+// Virtual mass: grains (rho_s 2500) in water (1000) that accelerates
+// uniformly at a_f, no drag, no gravity, buoyancy F = rho_f a_f per solid
+// volume (-grad p of the accelerating fluid). Then
+//   (rho_s + Cvm rho_f) a_s = rho_f a_f + Cvm rho_f a_f
+// so a_s/a_f = 1500/3000 = 0.5 with Cvm = 0.5 (0.4 without virtual mass).
+// Exact for the implicit update at any dt: the velocity grows linearly.
+TEST(FluidCoupling, VirtualMassAccelerationRatio)
+{
+    for (Real Cvm : {0.0, 0.5, 2.0})
+    {
+        MpmSystem s;
+        BoundarySpec b;
+        b.conditions = {WallCondition{WallType::periodic, 0}};
+        StepOptions o;
+        o.shape = ShapeKind::cubicBSpline; o.flipRatio = 1.0;
+        o.gravity = {0, 0, 0};
+        s.setup(box(4, 4, 4, 0.1), b, o);
+        s.materials().push_back(std::make_unique<NoStress>(0.0));
+        const Real h = 0.1, cellV = h*h*h, alphaS = 0.3, rhoS = 2500, rhoF = 1000, af = 2.0;
+        for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i)
+        {
+            const Real vol = alphaS*cellV/8;
+            s.particles().add({(i + 0.5)*h/2, (j + 0.5)*h/2, (k + 0.5)*h/2}, {0, 0, 0}, rhoS*vol, vol, 0);
+        }
+        const Lattice& L = s.lattice();
+        auto& c = s.coupling();
+        c.K.assign(L.nNodes, 0.0);
+        for (int d = 0; d < 3; ++d)
+        {
+            c.U[d].assign(L.nNodes, 0.0);
+            c.F[d].assign(L.nNodes, 0.0);
+            c.velocityIntegral[d].assign(L.nNodes, 0.0);
+            c.fluidAcceleration[d].assign(L.nNodes, 0.0);
+        }
+        c.addedMassDensity = Cvm*rhoF;
+        for (Index I = 0; I < L.nNodes; ++I)
+        {
+            c.F[1][I] = rhoF*af;
+            c.fluidAcceleration[1][I] = af;
+        }
+        const Real dt = 1e-3;
+        for (int n = 0; n < 10; ++n) s.step(dt);
+        const Real expected = (1 + Cvm)*rhoF/(rhoS + Cvm*rhoF)*af*10*dt;
+        for (Index p = 0; p < s.particles().size(); ++p)
+        {
+            ASSERT_NEAR(s.particles().v[1][p], expected, 1e-12) << "Cvm " << Cvm;
+            ASSERT_NEAR(s.particles().v[0][p], 0.0, 1e-15);
+        }
+    }
+}

@@ -412,15 +412,36 @@ void MpmSystem::nodalUpdate(Real dt)
         // Implicit drag: (m + dt K) v = p + dt (f + V_s F + K U); lumped mass.
         auto& c = coupling_;
         const Real tol = massTolerance_;
-        #pragma omp parallel for if(worthThreads(n))
-        for (Index I = 0; I < n; ++I)
+        if (c.addedMassDensity > 0)
         {
-            const Real m = g.mass[I];
-            const Real inv = m > tol ? 1.0/(m + dt*c.K[I]) : 0.0;
-            for (int d = 0; d < 3; ++d)
+            // With the added mass M_a = Cvm rho_f V_s, implicit in v as well
+            #pragma omp parallel for if(worthThreads(n))
+            for (Index I = 0; I < n; ++I)
             {
-                g.velocity[d][I] =
-                    (g.momentum[d][I] + dt*(g.force[d][I] + g.volume[I]*c.F[d][I] + c.K[I]*c.U[d][I]))*inv;
+                const Real m = g.mass[I];
+                const Real Ma = c.addedMassDensity*g.volume[I];
+                const Real inv = m > tol ? 1.0/(m + Ma + dt*c.K[I]) : 0.0;
+                const Real carry = m > tol ? 1 + Ma/m : 0.0;     // p + M_a p/m
+                for (int d = 0; d < 3; ++d)
+                {
+                    g.velocity[d][I] =
+                        (carry*g.momentum[d][I] + dt*(g.force[d][I] + g.volume[I]*c.F[d][I]
+                         + c.K[I]*c.U[d][I] + Ma*c.fluidAcceleration[d][I]))*inv;
+                }
+            }
+        }
+        else
+        {
+            #pragma omp parallel for if(worthThreads(n))
+            for (Index I = 0; I < n; ++I)
+            {
+                const Real m = g.mass[I];
+                const Real inv = m > tol ? 1.0/(m + dt*c.K[I]) : 0.0;
+                for (int d = 0; d < 3; ++d)
+                {
+                    g.velocity[d][I] =
+                        (g.momentum[d][I] + dt*(g.force[d][I] + g.volume[I]*c.F[d][I] + c.K[I]*c.U[d][I]))*inv;
+                }
             }
         }
     }

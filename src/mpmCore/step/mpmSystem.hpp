@@ -50,6 +50,12 @@ struct FluidCoupling
     std::array<std::vector<Real>, 3> F;       // force per solid volume [N/m^3]
     std::array<std::vector<Real>, 3> velocityIntegral;  // sum dt v_new
     Real time = 0;                            // sum dt
+    // Virtual mass (optional; 0: none, nothing is computed): the grains
+    // carry added mass Cvm rho_f V_s and receive Cvm rho_f V_s a_f, with
+    // a_f the fluid acceleration DU/Dt at the nodes, so the update becomes
+    // (m + M_a + dt K) v = p + M_a v_old + dt (f + V_s F + K U + M_a a_f).
+    Real addedMassDensity = 0;                // Cvm rho_f [kg/m^3]
+    std::array<std::vector<Real>, 3> fluidAcceleration;
 
     bool active() const { return !K.empty(); }
     void resetIntegral();

@@ -41,7 +41,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
             << "The case has a fluid (constant/transportProperties, 0/U) but "
             << "mpmProperties has no coupling { mode ...; forces (...); }" << nl
             << "Valid modes: oneWay twoWayMomentum twoWay; valid forces: "
-            << "drag pressureGradient gravity" << exit(FatalIOError);
+            << "drag pressureGradient gravity virtualMass" << exit(FatalIOError);
     }
     const dictionary& d = mpmDict.subDict("coupling");
     Info<< "Fluid coupling:" << nl;
@@ -53,12 +53,13 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         if (f == "drag") drag_ = true;
         else if (f == "pressureGradient") pressureGradient_ = true;
         else if (f == "gravity") gravity_ = true;
+        else if (f == "virtualMass") virtualMass_ = true;
         else
         {
             FatalIOErrorInFunction(d)
                 << "Unknown force '" << f << "' in forces" << nl
-                << "Valid forces: drag pressureGradient gravity"
-                << " (virtualMass is not implemented yet)" << exit(FatalIOError);
+                << "Valid forces: drag pressureGradient gravity virtualMass"
+                << exit(FatalIOError);
         }
     }
     Info<< "    forces " << forces << " (others are not computed)" << nl;
@@ -73,6 +74,12 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         Info<< "    subCycles auto (from the MPM stable time step)" << nl;
     }
 
+    if (virtualMass_)
+    {
+        // Added mass of a sphere: 0.5 (Auton, Hunt & Prud'homme 1988)
+        Cvm_ = readBounded(d, "Cvm", 0.5, 0, 10);
+        fluid_.enableVirtualMass(Cvm_, mode_ != couplingMode::oneWay);
+    }
     if (drag_) readDrag(mpmDict);
 
     // Gravity: from constant/g, for both phases, only if listed.
@@ -107,7 +114,9 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         c.U[k].assign(nNodes, 0.0);
         c.F[k].assign(nNodes, 0.0);
         c.velocityIntegral[k].assign(nNodes, 0.0);
+        if (virtualMass_) c.fluidAcceleration[k].assign(nNodes, 0.0);
     }
+    c.addedMassDensity = virtualMass_ ? Cvm_*fluid_.rho().value() : 0;
     Info<< endl;
     mpm_.system().mapToGrid();      // alpha.solid from the grain volumes
     updateFluidFraction();
@@ -302,6 +311,16 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         }
     }
 
+    if (virtualMass_)
+    {
+        // DU/Dt of the fluid over its last step, frozen over the sub-cycles
+        const volVectorField& DUDt = fluid_.DUDt();
+        forAll(node, celli)
+        {
+            for (int k = 0; k < 3; ++k) c.fluidAcceleration[k][node[celli]] = DUDt[celli][k];
+        }
+    }
+
     // Sub-cycle the solids over the fluid step
     label n = subCycles_;
     if (n == 0)
@@ -326,4 +345,20 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
     Us.correctBoundaryConditions();
     beta.correctBoundaryConditions();
     fluid_.setSolid(Us, capped_);
+    if (virtualMass_ && mode_ != couplingMode::oneWay)
+    {
+        // The fluid's share, -Cvm aS rho_f (DU/Dt - dUs/dt), with aS here
+        // even in twoWayMomentum (where the fluid's own aF is 1)
+        volScalarField::Internal alphaS
+        (
+            IOobject("alphaS.virtualMass", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedScalar(dimless, Zero)
+        );
+        forAll(node, celli)
+        {
+            alphaS[celli] = min(s.grid().volume[node[celli]]/mesh_.V()[celli], alphaMax_);
+        }
+        fluid_.setVirtualMassFraction(alphaS);
+    }
 }

@@ -115,6 +115,15 @@ void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
           + turbulence_->divDevRhoReff(U)
           + fvm::Sp(betaByRho, U)
         );
+        if (virtualMassReaction_)
+        {
+            // Cvm aS (dU/dt + (U.grad)U - dUs/dt): the time derivative
+            // implicit (it adds to the fluid's inertia, as in
+            // twoPhaseEulerFoam), the convective part from the last iterate
+            const volScalarField::Internal CvmAlphaS(Cvm_*alphaSVm_());
+            UEqn += CvmAlphaS*fvm::ddt(U);
+            UEqn += CvmAlphaS*((U & fvc::grad(U))().internalField() - dUsdt_());
+        }
         UEqn.relax();
 
         const volScalarField rAU(1.0/UEqn.A());
@@ -186,10 +195,68 @@ void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
             turbulence_->correct();
         }
     }
+
+    if (DUDt_.valid())
+    {
+        // For the grains' virtual mass over the next step
+        DUDt_() = fvc::ddt(U) + (U & fvc::grad(U));
+    }
+}
+
+void Foam::fluidPhase::enableVirtualMass(scalar Cvm, bool reaction)
+{
+    Cvm_ = Cvm;
+    virtualMassReaction_ = reaction;
+    DUDt_.reset
+    (
+        new volVectorField
+        (
+            IOobject("DUDt", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedVector(dimAcceleration, Zero)
+        )
+    );
+    if (reaction)
+    {
+        alphaSVm_.reset
+        (
+            new volScalarField::Internal
+            (
+                IOobject("alphaS.virtualMass", mesh_.time().timeName(), mesh_),
+                mesh_,
+                dimensionedScalar(dimless, Zero)
+            )
+        );
+        dUsdt_.reset
+        (
+            new volVectorField::Internal
+            (
+                IOobject("dUsdt", mesh_.time().timeName(), mesh_),
+                mesh_,
+                dimensionedVector(dimAcceleration, Zero)
+            )
+        );
+    }
+    Info<< "    virtual mass: Cvm " << Cvm
+        << (reaction ? ", the fluid feels the reaction" : ", on the grains only")
+        << nl;
+}
+
+void Foam::fluidPhase::setVirtualMassFraction(const volScalarField::Internal& alphaS)
+{
+    alphaSVm_() = alphaS;
 }
 
 void Foam::fluidPhase::setSolid(const volVectorField& Us, const boolList& capped)
 {
+    if (dUsdt_.valid())
+    {
+        // The grains' acceleration from the sub-cycle averages of two
+        // consecutive steps; zero at the first step (also after a restart)
+        if (UsSet_) dUsdt_() = (Us.internalField() - Us_.internalField())/mesh_.time().deltaT();
+        else dUsdt_() = dimensionedVector(dimAcceleration, Zero);
+    }
+    UsSet_ = true;
     Us_ = Us;
     alphaPhiSolid_ = fvc::interpolate(1 - alpha_)*fvc::flux(Us_);
     // Consistent with the cap: the solid flux into a capped cell is zero,
