@@ -13,7 +13,7 @@ import numpy as np
 
 import mpmPost
 
-RHO, NU, D, ALPHA_S, U0, L_BED, H = 1000.0, 1e-6, 1e-3, 0.6, 0.005, 0.1, 0.005
+RHO, NU, D, ALPHA_S, U0, L_BED, HEIGHT = 1000.0, 1e-6, 1e-3, 0.6, 0.005, 0.1, 0.2
 
 
 def ergun_gradient():
@@ -27,6 +27,7 @@ def main():
     last = mpmPost.field_times(case, "p")[-1]
     p = RHO*mpmPost.read_internal_field(case, last, "p")          # [Pa]
     aF = mpmPost.read_internal_field(case, last, "alpha.fluid")
+    H = HEIGHT/len(p)                                               # cell size
     y = (np.arange(len(p)) + 0.5)*H
     # Inside the bed: cells whose stencil does not reach its top edge
     inner = (y > 0.02) & (y < L_BED - 0.02)
