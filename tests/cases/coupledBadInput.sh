@@ -24,8 +24,8 @@ c=$(freshCopy bigGrains)
 sed -i 's/drag    { model Ergun; d 1e-3; }/drag    { model Ergun; d 0.02; }/' "$(props "$c")"
 sed -i 's/^endTime .*/endTime 0.02;/' "$c/system/controlDict"
 out=$(runIn "$c" mpmFoam 2>&1); rc=$?
-if [ $rc -eq 0 ] && echo "$out" | grep -q "d = 0.02 of material glass is larger than the cell size h = 0.005 (d/h = 4)"; then
-    echo "PASS: grain larger than the cell: warning with the ratio d/h = 4"
+if [ $rc -eq 0 ] && echo "$out" | grep -q "d = 0.02 of material glass is larger than the cell size h = 0.0025 (d/h = 8)"; then
+    echo "PASS: grain larger than the cell: warning with the ratio d/h = 8"
 else
     echo "FAIL: no warning with the ratio for d > h (rc $rc)"; failures=$((failures + 1))
 fi
