@@ -64,14 +64,6 @@ void MpmSystem::forEachPointColoured(Fn&& fn) const
 
 void MpmSystem::step(Real dt)
 {
-    if (coupling_.active() && options_.massMatrix == MassMatrix::consistent)
-    {
-        throw std::invalid_argument
-        (
-            "fluid coupling needs massMatrix lumped (the implicit drag update "
-            "is per node)"
-        );
-    }
     dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
     ++stepCount_;
 }
@@ -407,54 +399,29 @@ void MpmSystem::nodalUpdate(Real dt)
 {
     const Index n = lattice_.nNodes;
     auto& g = grid_;
-    if (coupling_.active())
+    const auto& c = coupling_;
+    const bool coupled = c.active();
+    const bool addedMass = coupled && c.addedMassDensity > 0;
+    for (auto& a : nodeRhs_) a.resize(n);
+    if (coupled) nodeDiag_.resize(n);
+    // (M + D) v = p + dt f, with M lumped or consistent. Coupled, the drag
+    // is implicit and the added mass M_a = Cvm rho_f V_s too:
+    //   D = dt K + M_a,
+    //   rhs += dt (V_s F + K U + M_a a_f) + M_a v_old.
+    #pragma omp parallel for if(worthThreads(n))
+    for (Index I = 0; I < n; ++I)
     {
-        // Implicit drag: (m + dt K) v = p + dt (f + V_s F + K U); lumped mass.
-        auto& c = coupling_;
-        const Real tol = massTolerance_;
-        if (c.addedMassDensity > 0)
+        for (int d = 0; d < 3; ++d) nodeRhs_[d][I] = g.momentum[d][I] + dt*g.force[d][I];
+        if (!coupled) continue;
+        const Real Ma = addedMass ? c.addedMassDensity*g.volume[I] : 0.0;
+        nodeDiag_[I] = dt*c.K[I] + Ma;
+        for (int d = 0; d < 3; ++d)
         {
-            // With the added mass M_a = Cvm rho_f V_s, implicit in v as well
-            #pragma omp parallel for if(worthThreads(n))
-            for (Index I = 0; I < n; ++I)
-            {
-                const Real m = g.mass[I];
-                const Real Ma = c.addedMassDensity*g.volume[I];
-                const Real inv = m > tol ? 1.0/(m + Ma + dt*c.K[I]) : 0.0;
-                const Real carry = m > tol ? 1 + Ma/m : 0.0;     // p + M_a p/m
-                for (int d = 0; d < 3; ++d)
-                {
-                    g.velocity[d][I] =
-                        (carry*g.momentum[d][I] + dt*(g.force[d][I] + g.volume[I]*c.F[d][I]
-                         + c.K[I]*c.U[d][I] + Ma*c.fluidAcceleration[d][I]))*inv;
-                }
-            }
-        }
-        else
-        {
-            #pragma omp parallel for if(worthThreads(n))
-            for (Index I = 0; I < n; ++I)
-            {
-                const Real m = g.mass[I];
-                const Real inv = m > tol ? 1.0/(m + dt*c.K[I]) : 0.0;
-                for (int d = 0; d < 3; ++d)
-                {
-                    g.velocity[d][I] =
-                        (g.momentum[d][I] + dt*(g.force[d][I] + g.volume[I]*c.F[d][I] + c.K[I]*c.U[d][I]))*inv;
-                }
-            }
+            nodeRhs_[d][I] += dt*(g.volume[I]*c.F[d][I] + c.K[I]*c.U[d][I]);
+            if (addedMass) nodeRhs_[d][I] += Ma*(g.velocityOld[d][I] + dt*c.fluidAcceleration[d][I]);
         }
     }
-    else
-    {
-        for (auto& a : nodeRhs_) a.resize(n);
-        #pragma omp parallel for if(worthThreads(n))
-        for (Index I = 0; I < n; ++I)
-        {
-            for (int d = 0; d < 3; ++d) nodeRhs_[d][I] = g.momentum[d][I] + dt*g.force[d][I];
-        }
-        solveMass<K, D>(nodeRhs_, g.velocity);
-    }
+    solveMass<K, D>(nodeRhs_, g.velocity, coupled ? &nodeDiag_ : nullptr);
     applyFriction(g.velocity);
     fillGhosts(g.velocity);
     if (coupling_.active())
@@ -474,16 +441,21 @@ void MpmSystem::nodalUpdate(Real dt)
 // matrix-free as the P2G of m_p times the G2P of x. Low wavenumbers converge
 // fast (the error shrinks like ((kh)^2/3)^sweeps); the highest ones keep a
 // lumped-like mass, so the scheme stays bounded where M_C is singular.
+// With diag (the coupling's dt K + M_a, >= 0) it solves (M + diag) x = rhs,
+// preconditioned by M_L + diag: a positive diagonal only speeds the sweeps.
 template<class K, int D>
-void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x)
+void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x,
+                           const std::vector<Real>* diag)
 {
     const Index nNodes = lattice_.nNodes;
     const Real tol = massTolerance_;
     const auto& m = grid_.mass;
+    // Jacobi preconditioner: the lumped mass plus the extra diagonal
+    auto diagonal = [&](Index I) { return diag ? m[I] + (*diag)[I] : m[I]; };
     #pragma omp parallel for if(worthThreads(nNodes))
     for (Index I = 0; I < nNodes; ++I)
     {
-        const Real inv = m[I] > tol ? 1.0/m[I] : 0.0;
+        const Real inv = m[I] > tol ? 1.0/diagonal(I) : 0.0;
         for (int d = 0; d < 3; ++d) x[d][I] = rhs[d][I]*inv;
     }
     if (options_.massMatrix == MassMatrix::lumped) return;
@@ -524,8 +496,9 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
         #pragma omp parallel for if(worthThreads(nNodes))
         for (Index I = 0; I < nNodes; ++I)
         {
-            const Real inv = m[I] > tol ? 1.0/m[I] : 0.0;
-            for (int d = 0; d < 3; ++d) x[d][I] += (rhs[d][I] - Mx[d][I])*inv;
+            const Real inv = m[I] > tol ? 1.0/diagonal(I) : 0.0;
+            const Real Dx = diag ? (*diag)[I] : 0.0;
+            for (int d = 0; d < 3; ++d) x[d][I] += (rhs[d][I] - Mx[d][I] - Dx*x[d][I])*inv;
         }
         fillGhosts(x);
     }

@@ -119,7 +119,9 @@ private:
     template<class K, int D> void gather(Real dt);
     template<class K, int D, bool Apic> void gatherKernel(Real dt);
     template<class K, int D> void gradientFromGrid(const std::array<std::vector<Real>, 3>& v);
-    template<class K, int D> void solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x);
+    // x = (M + diag)^-1 rhs, M lumped or consistent (Jacobi sweeps)
+    template<class K, int D> void solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x,
+                                            const std::vector<Real>* diag = nullptr);
     template<class Fn> void dispatch(Fn&& f);
     template<class Fn> void forEachPointColoured(Fn&& fn) const;
 
@@ -160,6 +162,7 @@ private:
     // Scratch for the consistent-mass sweeps: per point and per node.
     std::array<std::vector<Real>, 3> pointScratch_;
     std::array<std::vector<Real>, 3> nodeScratch_, nodeRhs_;
+    std::vector<Real> nodeDiag_;             // coupling: dt K + M_a
 };
 
 } // namespace mpm

@@ -85,7 +85,6 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     // Gravity: from constant/g, for both phases, only if listed.
     // Grains are incompressible: alpha.solid counts their volume m/rho.
     mpm_.system().setConstantGrainVolume(true);
-    const mpm::StepOptions& opts = mpm_.system().options();
     if (gravity_)
     {
         const uniformDimensionedVectorField g
@@ -98,11 +97,6 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     {
         mpm_.system().setGravity({0, 0, 0});
         Info<< "    no gravity (not in forces)" << nl;
-    }
-    if (opts.massMatrix != mpm::MassMatrix::lumped)
-    {
-        FatalIOErrorInFunction(mpmDict)
-            << "Fluid coupling needs massMatrix lumped" << exit(FatalIOError);
     }
 
     // Coupling arrays on the padded lattice; zero on ghosts.
