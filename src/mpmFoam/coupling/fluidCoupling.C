@@ -250,9 +250,23 @@ void Foam::fluidCoupling::updateFluidFraction()
     alphaF.correctBoundaryConditions();
     if (capped)
     {
+        // Every time and place: the cells (up to maxListed, then a count),
+        // each with its centre and projected alpha.solid
+        const label maxListed = 10;
         Info<< "alphaMax " << alphaMax_ << " reached at time "
             << mesh_.time().timeName() << " in " << capped << " cells; max "
-            << "alpha.solid " << maxAlphaS << " at " << mesh_.C()[maxCell] << nl;
+            << "alpha.solid " << maxAlphaS << " at " << mesh_.C()[maxCell] << nl
+            << "    capped cells (centre alpha.solid):";
+        label listed = 0;
+        forAll(capped_, celli)
+        {
+            if (!capped_[celli]) continue;
+            if (listed++ == maxListed) break;
+            Info<< ' ' << mesh_.C()[celli] << ' '
+                << s.grid().volume[node[celli]]/mesh_.V()[celli];
+        }
+        if (capped > maxListed) Info<< " ... and " << capped - maxListed << " more";
+        Info<< nl;
     }
 }
 
