@@ -98,3 +98,13 @@ def read_internal_field(case, time, name):
 def field_times(case, name):
     """Time directories (strings, ascending) holding field `name`."""
     return _time_dirs(case, lambda p: os.path.isfile(os.path.join(p, name)))
+
+
+def dict_scalar(path, key):
+    """First scalar value of `key` in an OpenFOAM dictionary file (comments
+    stripped; the keyword may sit in any sub-dictionary)."""
+    text = re.sub(r"//.*", "", open(path).read())
+    m = re.search(r"(?<![\w.])" + re.escape(key) + r"\s+([-+0-9.eE]+)\s*;", text)
+    if m is None:
+        raise KeyError("%s not found in %s" % (key, path))
+    return float(m.group(1))

@@ -8,6 +8,38 @@
 using namespace mpm;
 using namespace mpm::test;
 
+namespace
+{
+
+// A periodic box of n^3 cells (h = 0.1) filled with a uniform suspension:
+// 8 points per cell, solid fraction alphaS, grain density rhoS, points at
+// rest, stress-free; the coupling arrays sized and zero.
+void uniformSuspension(MpmSystem& s, int n, const StepOptions& o, Real alphaS, Real rhoS)
+{
+    BoundarySpec b;
+    b.conditions = {WallCondition{WallType::periodic, 0}};
+    s.setup(box(n, n, n, 0.1), b, o);
+    s.materials().push_back(std::make_unique<NoStress>(0.0));
+    const Real h = 0.1, vol = alphaS*h*h*h/8;
+    for (int k = 0; k < 2*n; ++k)
+    for (int j = 0; j < 2*n; ++j)
+    for (int i = 0; i < 2*n; ++i)
+    {
+        s.particles().add({(i + 0.5)*h/2, (j + 0.5)*h/2, (k + 0.5)*h/2}, {0, 0, 0}, rhoS*vol, vol, 0);
+    }
+    auto& c = s.coupling();
+    const Index nNodes = s.lattice().nNodes;
+    c.K.assign(nNodes, 0.0);
+    for (int d = 0; d < 3; ++d)
+    {
+        c.U[d].assign(nNodes, 0.0);
+        c.F[d].assign(nNodes, 0.0);
+        c.velocityIntegral[d].assign(nNodes, 0.0);
+    }
+}
+
+} // namespace
+
 TEST(FluidCoupling, StiffDragReachesEquilibriumSlip)
 {
     for (auto shape : {ShapeKind::linearHat, ShapeKind::cubicBSpline})
@@ -15,35 +47,17 @@ TEST(FluidCoupling, StiffDragReachesEquilibriumSlip)
     for (auto mass : {MassMatrix::lumped, MassMatrix::consistent})
     {
         MpmSystem s;
-        BoundarySpec b;
-        b.conditions = {WallCondition{WallType::periodic, 0}};
         StepOptions o;
         o.shape = shape; o.flipRatio = alpha; o.massMatrix = mass;
         o.gravity = {0, 0, -9.81};
-        s.setup(box(8, 8, 8, 0.1), b, o);
-        s.materials().push_back(std::make_unique<NoStress>(0.0));
-        // A uniform suspension: 8 points per cell, solid fraction 0.3, grains
-        // of density 2500 in water (1000).
+        // Grains of density 2500 in water (1000), solid fraction 0.3
         const Real h = 0.1, cellV = h*h*h, alphaS = 0.3, rhoS = 2500, rhoF = 1000;
-        for (int k = 0; k < 16; ++k)
-        for (int j = 0; j < 16; ++j)
-        for (int i = 0; i < 16; ++i)
-        {
-            const Real vol = alphaS*cellV/8;
-            s.particles().add({(i + 0.5)*h/2, (j + 0.5)*h/2, (k + 0.5)*h/2}, {0, 0, 0}, rhoS*vol, vol, 0);
-        }
+        uniformSuspension(s, 8, o, alphaS, rhoS);
         const Lattice& L = s.lattice();
         const Real m = rhoS*alphaS*cellV;             // solid mass per node
         const Real dt = 1e-3, tau = 1e-3*dt;          // relaxation time / dt = 1e-3
         const Real Kval = m/tau;                      // K = beta V, tau = m/K
         auto& c = s.coupling();
-        c.K.assign(L.nNodes, 0.0);
-        for (int d = 0; d < 3; ++d)
-        {
-            c.U[d].assign(L.nNodes, 0.0);
-            c.F[d].assign(L.nNodes, 0.0);
-            c.velocityIntegral[d].assign(L.nNodes, 0.0);
-        }
         for (int kk = 0; kk < 8; ++kk)
         for (int jj = 0; jj < 8; ++jj)
         for (int ii = 0; ii < 8; ++ii)
@@ -80,31 +94,14 @@ TEST(FluidCoupling, VirtualMassAccelerationRatio)
     for (auto mass : {MassMatrix::lumped, MassMatrix::consistent})
     {
         MpmSystem s;
-        BoundarySpec b;
-        b.conditions = {WallCondition{WallType::periodic, 0}};
         StepOptions o;
         o.shape = ShapeKind::cubicBSpline; o.flipRatio = 1.0; o.massMatrix = mass;
         o.gravity = {0, 0, 0};
-        s.setup(box(4, 4, 4, 0.1), b, o);
-        s.materials().push_back(std::make_unique<NoStress>(0.0));
-        const Real h = 0.1, cellV = h*h*h, alphaS = 0.3, rhoS = 2500, rhoF = 1000, af = 2.0;
-        for (int k = 0; k < 8; ++k)
-        for (int j = 0; j < 8; ++j)
-        for (int i = 0; i < 8; ++i)
-        {
-            const Real vol = alphaS*cellV/8;
-            s.particles().add({(i + 0.5)*h/2, (j + 0.5)*h/2, (k + 0.5)*h/2}, {0, 0, 0}, rhoS*vol, vol, 0);
-        }
+        const Real rhoS = 2500, rhoF = 1000, af = 2.0;
+        uniformSuspension(s, 4, o, 0.3, rhoS);
         const Lattice& L = s.lattice();
         auto& c = s.coupling();
-        c.K.assign(L.nNodes, 0.0);
-        for (int d = 0; d < 3; ++d)
-        {
-            c.U[d].assign(L.nNodes, 0.0);
-            c.F[d].assign(L.nNodes, 0.0);
-            c.velocityIntegral[d].assign(L.nNodes, 0.0);
-            c.fluidAcceleration[d].assign(L.nNodes, 0.0);
-        }
+        for (int d = 0; d < 3; ++d) c.fluidAcceleration[d].assign(L.nNodes, 0.0);
         c.addedMassDensity = Cvm*rhoF;
         for (Index I = 0; I < L.nNodes; ++I)
         {

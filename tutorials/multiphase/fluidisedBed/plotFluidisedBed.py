@@ -28,14 +28,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.environ.get("MPMFOAM_DIR", ""), "etc", "python"))
 import mpmPost  # noqa: E402
 
-
-def entry(path, key):
-    """First scalar value of `key` in an OpenFOAM dictionary file."""
-    text = re.sub(r"//.*", "", open(path).read())
-    m = re.search(r"(?<![\w.])" + re.escape(key) + r"\s+([-+0-9.eE]+)\s*;", text)
-    if m is None:
-        raise KeyError("%s not found in %s" % (key, path))
-    return float(m.group(1))
+entry = mpmPost.dict_scalar
 
 
 def setup(case):
