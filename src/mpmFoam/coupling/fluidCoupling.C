@@ -336,6 +336,10 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         const scalar dtMpm = mpm_.deltaT();
         n = max(label(1), label(std::ceil(dt/dtMpm - 1e-9)));
     }
+    else
+    {
+        mpm_.warnIfAboveCourantLimit(dt/n, "coupling subCycles");
+    }
     lastSubCycles_ = n;
     c.resetIntegral();
     for (label i = 0; i < n; ++i) mpm_.evolve(dt/n);

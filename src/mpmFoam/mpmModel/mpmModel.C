@@ -64,9 +64,34 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     updateFields();
 }
 
+void Foam::mpmModel::warnIfAboveCourantLimit(scalar dt, const char* source) const
+{
+    if (courantWarned_) return;
+    const scalar Co = courantNumber(dt);
+    if (Co > 1)
+    {
+        // Once per run: the explicit update is unstable above ~1 (the
+        // analysed limits, docs/stabilityAnalysis.md, are 0.7-2.7 by shape
+        // function and stress update); the run itself will tell.
+        courantWarned_ = true;
+        WarningInFunction
+            << "The MPM step " << dt << " set by " << source << " gives "
+            << "Courant number " << Co << " > 1 at time "
+            << mesh_.time().timeName() << " (signal speed "
+            << system_.maxSignalSpeed() << ", h " << lattice_.lattice().h
+            << "). Explicit MPM is unstable above ~1 (docs/"
+            << "stabilityAnalysis.md); timeStep { type adaptive; courant 0.5; }"
+            << " keeps it stable." << endl;
+    }
+}
+
 Foam::scalar Foam::mpmModel::deltaT() const
 {
-    if (!controls_.adaptive) return mesh_.time().deltaTValue();
+    if (!controls_.adaptive)
+    {
+        warnIfAboveCourantLimit(mesh_.time().deltaTValue(), "timeStep fixed (controlDict deltaT)");
+        return mesh_.time().deltaTValue();
+    }
     const floatingPointTrapsOff noTraps;
     const scalar dt = min(system_.stableDeltaT(controls_.courant), controls_.maxDeltaT);
     if (!std::isfinite(dt) || dt <= 0)
