@@ -3,6 +3,7 @@
 Reads the solver's postProcessing/mpmSummary/*/summary.dat and the ASCII
 lagrangian fields of the materialPoints cloud.
 """
+import argparse
 import glob
 import os
 import re
@@ -108,3 +109,12 @@ def dict_scalar(path, key):
     if m is None:
         raise KeyError("%s not found in %s" % (key, path))
     return float(m.group(1))
+
+
+def plot_parser(description=None):
+    """Command line of the tutorials' plot scripts: --case (default '.') and
+    --no-plot (print the figures only); add a script's own options to it."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--case", default=".")
+    ap.add_argument("--no-plot", action="store_true")
+    return ap

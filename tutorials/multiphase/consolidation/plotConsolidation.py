@@ -28,7 +28,6 @@ p = 0 at the top of the column of height Hc). Compared inside the layer
 Prints the figures and a SUMMARY line; writes consolidation.png unless
 --no-plot.
 """
-import argparse
 import os
 import re
 import sys
@@ -76,10 +75,7 @@ def terzaghi(c, y, T, terms=400):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--case", default=".")
-    ap.add_argument("--no-plot", action="store_true")
-    args = ap.parse_args()
+    args = mpmPost.plot_parser().parse_args()
     case = args.case
     c = setup(case)
     H, h, gH = c["H"], c["h"], c["gammaP"]*c["H"]

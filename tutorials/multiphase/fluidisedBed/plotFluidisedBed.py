@@ -18,7 +18,6 @@ fluidised plateau; U_mf(Wen-Yu) from Re_mf = sqrt(33.7^2 + 0.0408 Ar) - 33.7.
 Each step of the inlet table is averaged over its last `--window` seconds.
 Prints the figures; writes fluidisedBed.png unless --no-plot.
 """
-import argparse
 import os
 import re
 import sys
@@ -112,12 +111,10 @@ def steps(t, Us, rel=1e-3):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--case", default=".")
+    ap = mpmPost.plot_parser()
     ap.add_argument("--window", type=float, default=0.5, help="averaging window at the end of each step [s]")
     ap.add_argument("--settle", type=float, default=0.4,
                     help="time after the start of a step before every step is checked [s]")
-    ap.add_argument("--no-plot", action="store_true")
     args = ap.parse_args()
     case = args.case
     c = setup(case)

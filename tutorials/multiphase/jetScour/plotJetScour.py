@@ -6,7 +6,6 @@ wide columns) under the jet and at the walls, the scour depth (initial
 surface minus the lowest surface under the jet) and the heap height beside
 it; writes jetScour.png unless --no-plot. A SUMMARY line is for the test.
 """
-import argparse
 import os
 import sys
 
@@ -26,10 +25,7 @@ def surface(x, y, bins):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--case", default=".")
-    ap.add_argument("--no-plot", action="store_true")
-    args = ap.parse_args()
+    args = mpmPost.plot_parser().parse_args()
     case = args.case
     ts = mpmPost.times(case)
     bins = np.linspace(0, WIDTH, 31)
