@@ -29,9 +29,7 @@ for n in 48 96 48c; do
     c=$(copyTutorial multiphase/consolidation "consolidation$n")
     [ "$n" = 48c ] && sed -i 's/^massMatrix .*/massMatrix      consistent;/' "$c/constant/mpmProperties"
     if [ "$n" = 96 ]; then
-        h=$("$PY" -c "print(0.12/$n)")
-        sed -i "s/^h .*/h       $h;/; s/^nCells .*/nCells  $n;/" "$c/system/blockMeshDict"
-        sed -i "s/max *(.*);/max           ($h 0.1 $h);/" "$c/system/mpmSetParticlesDict"
+        h=$(resizeColumn "$c" 0.12 "$n" 0.1)
         # hydrostatic initial p on the finer mesh
         "$PY" - "$c/0/p" "$n" "$h" <<'PYEOF'
 import re, sys

@@ -26,9 +26,7 @@ declare -A drop
 for n in 40 80 160; do
     c=$(copyTutorial multiphase/packedBed "bed$n")
     if [ "$n" != 80 ]; then
-        h=$("$PY" -c "print(0.2/$n)")
-        sed -i "s/^h .*/h       $h;/; s/^nCells .*/nCells  $n;/" "$c/system/blockMeshDict"
-        sed -i "s/max *(.*);/max           ($h 0.1 $h);/" "$c/system/mpmSetParticlesDict"
+        resizeColumn "$c" 0.2 "$n" 0.1 > /dev/null
     fi
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
         || { echo "FAIL: run ($n cells)"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }

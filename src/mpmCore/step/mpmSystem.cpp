@@ -104,14 +104,7 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
             s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { o[I] += N*v; });
         });
     });
-    for (const auto& gh : boundary_.ghosts())
-    {
-        for (auto& o : out) o[gh.image] += o[gh.ghost];
-    }
-    for (const auto& gh : boundary_.ghosts())
-    {
-        for (auto& o : out) o[gh.ghost] = o[gh.image];
-    }
+    for (auto& o : out) foldScalar(o);
 }
 
 template<class K, int D>
@@ -292,27 +285,22 @@ void MpmSystem::addGravity()
 void MpmSystem::foldGhosts(unsigned what)
 {
     const bool mass = what & foldMass, momentum = what & foldMomentum, force = what & foldForce;
-    // Serial and in a fixed order: an image may receive from several ghosts.
     auto& g = grid_;
-    for (const auto& gh : boundary_.ghosts())
+    if (mass)
     {
-        if (mass)
-        {
-            g.mass[gh.image] += g.mass[gh.ghost];
-            g.volume[gh.image] += g.volume[gh.ghost];
-        }
+        foldScalar(g.mass);
+        foldScalar(g.volume);
     }
     if (momentum) foldVector(g.momentum);
     if (force) foldVector(g.force);
-    // Ghosts then hold their image's values (mass for completeness).
-    for (const auto& gh : boundary_.ghosts())
-    {
-        if (mass)
-        {
-            g.mass[gh.ghost] = g.mass[gh.image];
-            g.volume[gh.ghost] = g.volume[gh.image];
-        }
-    }
+}
+
+void MpmSystem::foldScalar(std::vector<Real>& a) const
+{
+    // Serial and in a fixed order: an image may receive from several ghosts.
+    for (const auto& gh : boundary_.ghosts()) a[gh.image] += a[gh.ghost];
+    // Ghosts then hold their image's values (for completeness).
+    for (const auto& gh : boundary_.ghosts()) a[gh.ghost] = a[gh.image];
 }
 
 // Contact of unilateral (slip, friction) walls, per image node: with the

@@ -127,6 +127,8 @@ private:
 
     enum FoldWhat : unsigned { foldMass = 1, foldMomentum = 2, foldForce = 4 };
     void foldGhosts(unsigned what);
+    // Adds each ghost's scalar into its image, then copies images to ghosts
+    void foldScalar(std::vector<Real>& a) const;
     void foldVector(std::array<std::vector<Real>, 3>& a) const;
     void decideWallContact(Real dt, bool withForce);
     void fillGhosts(std::array<std::vector<Real>, 3>& v) const;

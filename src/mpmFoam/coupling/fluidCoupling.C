@@ -193,6 +193,11 @@ void Foam::fluidCoupling::readDrag(const dictionary& mpmDict)
     }
 }
 
+Foam::scalar Foam::fluidCoupling::alphaSolid(label celli) const
+{
+    return mpm_.system().grid().volume[mpm_.lattice().cellNode()[celli]]/mesh_.V()[celli];
+}
+
 void Foam::fluidCoupling::updateBeta()
 {
     mpm::MpmSystem& s = mpm_.system();
@@ -206,7 +211,7 @@ void Foam::fluidCoupling::updateBeta()
     {
         const label I = node[celli];
         const scalar volume = s.grid().volume[I];
-        const scalar alphaS = min(volume/mesh_.V()[celli], alphaMax_);
+        const scalar alphaS = cappedAlphaSolid(celli);
         beta[celli] = 0;
         if (alphaS <= 0) continue;
         const vector Us(s.grid().velocity[0][I], s.grid().velocity[1][I], s.grid().velocity[2][I]);
@@ -229,7 +234,6 @@ void Foam::fluidCoupling::updateBeta()
 
 void Foam::fluidCoupling::updateFluidFraction()
 {
-    const mpm::MpmSystem& s = mpm_.system();
     const labelList& node = mpm_.lattice().cellNode();
     volScalarField& alphaF = fluid_.alpha();
     // primitiveFieldRef() keeps the previous fluid fraction as the old time
@@ -242,7 +246,7 @@ void Foam::fluidCoupling::updateFluidFraction()
     label maxCell = -1;
     forAll(node, celli)
     {
-        const scalar alphaS = s.grid().volume[node[celli]]/mesh_.V()[celli];
+        const scalar alphaS = alphaSolid(celli);
         if (alphaS > maxAlphaS) { maxAlphaS = alphaS; maxCell = celli; }
         if (alphaS > alphaMax_) { ++capped; capped_[celli] = true; }
         aF[celli] = mode_ == couplingMode::twoWay ? 1 - min(alphaS, alphaMax_) : 1.0;
@@ -262,8 +266,7 @@ void Foam::fluidCoupling::updateFluidFraction()
         {
             if (!capped_[celli]) continue;
             if (listed++ == maxListed) break;
-            Info<< ' ' << mesh_.C()[celli] << ' '
-                << s.grid().volume[node[celli]]/mesh_.V()[celli];
+            Info<< ' ' << mesh_.C()[celli] << ' ' << alphaSolid(celli);
         }
         if (capped > maxListed) Info<< " ... and " << capped - maxListed << " more";
         Info<< nl;
@@ -306,7 +309,7 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         const label I = node[celli];
         const scalar V = mesh_.V()[celli];
         const scalar KDrag = drag_ ? beta[celli]*V : 0;
-        const scalar aS = min(s.grid().volume[I]/V, alphaMax_);
+        const scalar aS = cappedAlphaSolid(celli);
         const scalar aF = volumeCoupled ? 1 - aS : 1;
         const scalar slipPerDv = volumeCoupled ? 1/aF : 1;
         const scalar K = KDrag*slipPerDv*(1 + (pressureResponse ? aS/aF : 0));
@@ -369,7 +372,7 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         );
         forAll(node, celli)
         {
-            alphaS[celli] = min(s.grid().volume[node[celli]]/mesh_.V()[celli], alphaMax_);
+            alphaS[celli] = cappedAlphaSolid(celli);
         }
         fluid_.setVirtualMassFraction(alphaS);
     }
