@@ -35,6 +35,10 @@ sed -i 's/forces      (drag pressureGradient);/forces      (drag lift);/' "$(pro
 expectFailure "unknown coupling force" "Unknown force 'lift' in forces" runIn "$c" mpmFoam
 expectFailure "coupling forces listed" "Valid forces: drag pressureGradient gravity virtualMass" runIn "$c" mpmFoam
 
+c=$(freshCopy negativeCvm)
+sed -i 's/forces      (drag pressureGradient);/forces      (drag pressureGradient virtualMass);\n    Cvm         -0.5;/' "$(props "$c")"
+expectFailure "virtual-mass coefficient out of range" "Keyword Cvm = -0.5 is out of range \[0, 10\]" runIn "$c" mpmFoam
+
 c=$(freshCopy unknownMode)
 sed -i 's/mode        twoWay;/mode        threeWay;/' "$(props "$c")"
 expectFailure "unknown coupling mode" "Valid mode choices: oneWay twoWayMomentum twoWay" runIn "$c" mpmFoam
