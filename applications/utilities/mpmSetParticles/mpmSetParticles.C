@@ -45,7 +45,8 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
     mpm::Particles points;
-    const label n = seedRegions(mesh, lattice, materials, seedDict.subDict("regions"), points);
+    const label nLocal = seedRegions(mesh, lattice, materials, seedDict.subDict("regions"), points);
+    const label n = returnReduce(nLocal, sumOp<label>());
     if (n == 0)
     {
         FatalIOErrorInFunction(seedDict)
@@ -54,7 +55,8 @@ int main(int argc, char *argv[])
     }
 
     scalar mass = 0;
-    for (label p = 0; p < n; ++p) mass += points.mass[p];
+    for (label p = 0; p < nLocal; ++p) mass += points.mass[p];
+    reduce(mass, sumOp<scalar>());
     Info<< nl << "Writing " << n << " material points (total mass " << mass
         << ") to " << runTime.timeName()/cloud::prefix/materialPointsCloudName
         << nl << endl;

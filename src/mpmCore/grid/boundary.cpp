@@ -36,15 +36,11 @@ int BoundarySpec::conditionAt(const Lattice& L, int side, int i, int j, int k) c
     return fc[std::size_t(r[lo]) + std::size_t(L.nCells[lo])*std::size_t(r[hi])];
 }
 
-void Boundary::build(const Lattice& L, const BoundarySpec& spec)
+std::array<bool, 3> Boundary::periodicAxes(const Lattice& L, const BoundarySpec& spec)
 {
-    ghosts_.clear();
-    friction_.clear();
-
-    // Periodicity is a property of an axis: both sides must agree.
+    std::array<bool, 3> periodic{false, false, false};
     for (int a = 0; a < 3; ++a)
     {
-        periodic_[a] = false;
         if (!L.solved[a]) continue;
         const bool lo = spec.conditions.at(spec.conditionAt(L, 2*a, 0, 0, 0)).type == WallType::periodic;
         const bool hi = spec.conditions.at(spec.conditionAt(L, 2*a + 1, 0, 0, 0)).type == WallType::periodic;
@@ -56,16 +52,34 @@ void Boundary::build(const Lattice& L, const BoundarySpec& spec)
               + " is periodic on one side only"
             );
         }
-        periodic_[a] = lo;
+        periodic[a] = lo;
     }
+    return periodic;
+}
 
-    for (int k = 0; k < L.nodes[2]; ++k)
-    for (int j = 0; j < L.nodes[1]; ++j)
-    for (int i = 0; i < L.nodes[0]; ++i)
+void Boundary::build(const Lattice& L, const BoundarySpec& spec)
+{
+    build(L, spec, L, {0, 0, 0}, nullptr);
+}
+
+void Boundary::build
+(
+    const Lattice& L, const BoundarySpec& spec, const Lattice& B,
+    const std::array<int, 3>& offset, const std::function<bool(Index)>& ownsCell
+)
+{
+    ghosts_.clear();
+    friction_.clear();
+    periodic_ = periodicAxes(L, spec);
+    const bool decomposed = bool(ownsCell);
+
+    for (int k = 0; k < B.nodes[2]; ++k)
+    for (int j = 0; j < B.nodes[1]; ++j)
+    for (int i = 0; i < B.nodes[0]; ++i)
     {
-        // Real indices; reflect each out-of-range solved coordinate in turn.
-        int r[3] = {i - L.padOf(0), j - L.padOf(1), k - L.padOf(2)};
-        bool isGhost = false;
+        // Global real indices; reflect each out-of-range solved coordinate in turn.
+        int r[3] = {i - B.padOf(0) + offset[0], j - B.padOf(1) + offset[1], k - B.padOf(2) + offset[2]};
+        bool isGhost = false, skip = false;
         std::array<Real, 3> sign{1, 1, 1};
         int reflections = 0, unilateralAxis = -1;
         Real outward = 0;
@@ -73,6 +87,7 @@ void Boundary::build(const Lattice& L, const BoundarySpec& spec)
         {
             const int n = L.nCells[a];
             if (!L.solved[a] || (r[a] >= 0 && r[a] < n)) continue;
+            if (decomposed && periodic_[a]) { skip = true; break; }
             isGhost = true;
             const bool low = r[a] < 0;
             // The face this ghost lies across: other coordinates clamped.
@@ -94,16 +109,15 @@ void Boundary::build(const Lattice& L, const BoundarySpec& spec)
                 else { sign[a] = -sign[a]; unilateralAxis = a; outward = low ? -1 : 1; }
             }
         }
-        if (isGhost)
-        {
-            // Corner ghosts (two or more reflections) stay bilateral.
-            if (reflections != 1) unilateralAxis = -1;
-            ghosts_.push_back
-            (
-                {L.node(i, j, k), L.realNode(r[0], r[1], r[2]), sign,
-                 unilateralAxis, unilateralAxis >= 0 ? outward : 0.0}
-            );
-        }
+        if (skip || !isGhost) continue;
+        if (decomposed && !ownsCell(L.cellIndex(r[0], r[1], r[2]))) continue;
+        // Corner ghosts (two or more reflections) stay bilateral.
+        if (reflections != 1) unilateralAxis = -1;
+        const Index image = B.realNode(r[0] - offset[0], r[1] - offset[1], r[2] - offset[2]);
+        ghosts_.push_back
+        (
+            {B.node(i, j, k), image, sign, unilateralAxis, unilateralAxis >= 0 ? outward : 0.0}
+        );
     }
 
     // Friction contact acts on the first node layer next to friction faces.
@@ -113,15 +127,18 @@ void Boundary::build(const Lattice& L, const BoundarySpec& spec)
         for (int lowHigh = 0; lowHigh < 2; ++lowHigh)
         {
             const int side = 2*a + lowHigh;
-            for (int k = 0; k < L.nCells[2]; ++k)
-            for (int j = 0; j < L.nCells[1]; ++j)
-            for (int i = 0; i < L.nCells[0]; ++i)
+            for (int k = 0; k < B.nCells[2]; ++k)
+            for (int j = 0; j < B.nCells[1]; ++j)
+            for (int i = 0; i < B.nCells[0]; ++i)
             {
-                const int r[3] = {i, j, k};
+                const int r[3] = {i + offset[0], j + offset[1], k + offset[2]};
                 if (r[a] != (lowHigh ? L.nCells[a] - 1 : 0)) continue;
-                const auto& wc = spec.conditions.at(spec.conditionAt(L, side, i, j, k));
+                bool real = true;
+                for (int b = 0; b < 3; ++b) real = real && r[b] >= 0 && r[b] < L.nCells[b];
+                if (!real || (decomposed && !ownsCell(L.cellIndex(r[0], r[1], r[2])))) continue;
+                const auto& wc = spec.conditions.at(spec.conditionAt(L, side, r[0], r[1], r[2]));
                 if (wc.type != WallType::friction) continue;
-                friction_.push_back({L.realNode(i, j, k), a, lowHigh ? 1.0 : -1.0, wc.frictionCoefficient});
+                friction_.push_back({B.realNode(i, j, k), a, lowHigh ? 1.0 : -1.0, wc.frictionCoefficient});
             }
         }
     }

@@ -19,6 +19,7 @@
 #pragma once
 #include "lattice.hpp"
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,20 @@ public:
     struct FrictionNode { Index node; int axis; Real outward; Real mu; };
 
     void build(const Lattice& L, const BoundarySpec& spec);
+
+    // A decomposed rank: `local` is its box lattice, whose real node 0 is
+    // the global real node `offset`. Ghosts are listed only where this rank
+    // folds them: canonical ones (periodic copies are the halo's) whose
+    // image cell it owns (ownsCell(global cell index)); friction nodes only
+    // on owned cells. The node indices are the box lattice's.
+    void build
+    (
+        const Lattice& global, const BoundarySpec& spec, const Lattice& local,
+        const std::array<int, 3>& offset, const std::function<bool(Index)>& ownsCell
+    );
+
+    // Periodic axes of a spec (both sides of an axis must agree).
+    static std::array<bool, 3> periodicAxes(const Lattice& L, const BoundarySpec& spec);
 
     const std::vector<Ghost>& ghosts() const { return ghosts_; }
     const std::vector<FrictionNode>& frictionNodes() const { return friction_; }

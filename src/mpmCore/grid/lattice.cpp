@@ -17,7 +17,7 @@ void Lattice::finalise()
 
     for (int a = 0; a < 3; ++a)
     {
-        if (solved[a] && nCells[a] < pad)
+        if (solved[a] && nCells[a] < (checkGhostLayers ? pad : 1))
         {
             throw std::invalid_argument
             (

@@ -18,6 +18,9 @@ struct Lattice
     std::array<int, 3> nCells{1, 1, 1};    // real nodes per direction
     std::array<bool, 3> solved{true, true, true};
     int pad = 2;                           // ghost layers (enough for CBS)
+    // Whole domains need pad cells to mirror their ghosts; a decomposed
+    // rank's box lattice (parallel/subdomain.hpp) mirrors nothing.
+    bool checkGhostLayers = true;
 
     // Derived by finalise()
     int dim = 3;                           // number of solved directions

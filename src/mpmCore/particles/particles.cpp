@@ -1,4 +1,5 @@
 #include "particles.hpp"
+#include "../parallel/communicator.hpp"
 
 namespace mpm {
 
@@ -13,8 +14,8 @@ void permuteArray(std::vector<T>& a, const std::vector<Index>& order, std::vecto
 }
 
 // Applies f to every per-point array, so new fields need one line here only.
-template<class Fn>
-void forEachArray(Particles& p, Fn&& f)
+template<class P, class Fn>
+void forEachArray(P& p, Fn&& f)
 {
     for (auto& a : p.x) f(a);
     for (auto& a : p.v) f(a);
@@ -58,6 +59,37 @@ void Particles::permute(const std::vector<Index>& order)
     forEachArray(*this, [&](std::vector<Real>& a) { permuteArray(a, order, tmp); });
     std::vector<int> ti; permuteArray(material, order, ti);
     std::vector<std::int64_t> tl; permuteArray(id, order, tl);
+}
+
+void Particles::pack(Index p, std::vector<char>& buf) const
+{
+    forEachArray(*this, [&](const std::vector<Real>& a) { appendBytes(buf, &a[p], 1); });
+    appendBytes(buf, &material[p], 1);
+    appendBytes(buf, &id[p], 1);
+}
+
+void Particles::unpack(const std::vector<char>& buf)
+{
+    std::size_t nReal = 0;
+    forEachArray(*this, [&](const std::vector<Real>&) { ++nReal; });
+    const std::size_t bytes = nReal*sizeof(Real) + sizeof(int) + sizeof(std::int64_t);
+    const Index n0 = size(), n = Index(buf.size()/bytes);
+    resize(n0 + n);
+    std::size_t at = 0;
+    for (Index p = n0; p < n0 + n; ++p)
+    {
+        forEachArray(*this, [&](std::vector<Real>& a) { readBytes(buf, at, &a[p], 1); });
+        readBytes(buf, at, &material[p], 1);
+        readBytes(buf, at, &id[p], 1);
+    }
+}
+
+void Particles::keepOnly(const std::vector<char>& keep)
+{
+    std::vector<Index> order;
+    for (Index p = 0; p < size(); ++p) if (keep[p]) order.push_back(p);
+    permute(order);
+    resize(Index(order.size()));
 }
 
 Real Particles::J(Index p) const

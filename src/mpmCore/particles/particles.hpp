@@ -35,6 +35,13 @@ struct Particles
     // Reorders every array by `order` (new i = old order[i]).
     void permute(const std::vector<Index>& order);
 
+    // Migration between ranks: appends point p (every field) to a byte
+    // buffer; appends every point of such a buffer; keeps the points with
+    // keep[p] != 0, in order.
+    void pack(Index p, std::vector<char>& buf) const;
+    void unpack(const std::vector<char>& buf);
+    void keepOnly(const std::vector<char>& keep);
+
     Real J(Index p) const;
 };
 

@@ -9,15 +9,35 @@
 
 namespace mpm {
 
-void MpmSystem::setup(const Lattice& lattice, const BoundarySpec& spec, const StepOptions& options)
+void MpmSystem::setup
+(
+    const Lattice& lattice, const BoundarySpec& spec, const StepOptions& options,
+    std::shared_ptr<const Subdomain> subdomain
+)
 {
-    lattice_ = lattice;
-    lattice_.finalise();
-    boundary_.build(lattice_, spec);
+    domain_ = lattice;
+    domain_.finalise();
+    subdomain_ = std::move(subdomain);
+    if (subdomain_)
+    {
+        const Subdomain& sd = *subdomain_;
+        lattice_ = sd.local();
+        boundary_.build(domain_, spec, lattice_, sd.offset(), [&sd](Index c) { return sd.ownsCell(c); });
+    }
+    else
+    {
+        lattice_ = domain_;
+        boundary_.build(lattice_, spec);
+    }
     options_ = options;
     // Gravity along unsolved directions has nothing to act on.
     for (int a = 0; a < 3; ++a) if (!lattice_.solved[a]) options_.gravity[a] = 0;
     grid_.resize(lattice_.nNodes);
+}
+
+int MpmSystem::stencilReach(ShapeKind kind)
+{
+    return dispatchShape(kind, [](auto k) { return decltype(k)::width/2; });
 }
 
 template<class Fn>
@@ -65,6 +85,7 @@ void MpmSystem::forEachPointColoured(Fn&& fn) const
 void MpmSystem::step(Real dt)
 {
     dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
+    migrate();
     ++stepCount_;
 }
 
@@ -75,6 +96,7 @@ void MpmSystem::mapToGrid()
     {
         binning_.build(lattice_, particles_);
         scatter<decltype(k), decltype(d)::value>(true, false, false);
+        sumHalo(foldMass | foldMomentum);
         foldGhosts(foldMass);
         decideWallContact(0, false);
         foldGhosts(foldMomentum);
@@ -104,7 +126,11 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
             s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { o[I] += N*v; });
         });
     });
-    for (auto& o : out) foldScalar(o);
+    for (auto& o : out)
+    {
+        sumHalo({o.data()});
+        foldScalar(o);
+    }
 }
 
 template<class K, int D>
@@ -123,7 +149,8 @@ void MpmSystem::stepImpl(Real dt)
     }
     {
         ScopedTimer t(timers_.nodal);
-        if (order != StressUpdate::USF) addGravity();
+        if (order != StressUpdate::USF) addGravity(false);
+        sumHalo(foldMass | foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
         foldGhosts(foldMass);
         decideWallContact(dt, order != StressUpdate::USF);
         foldGhosts(foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
@@ -135,7 +162,7 @@ void MpmSystem::stepImpl(Real dt)
         { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocityOld); }
         { ScopedTimer t(timers_.constitutive); updateStress(dt); }
         { ScopedTimer t(timers_.p2g); scatter<K, D>(false, true, false); }
-        { ScopedTimer t(timers_.nodal); addGravity(); foldGhosts(foldForce); }
+        { ScopedTimer t(timers_.nodal); sumHalo(foldForce); addGravity(true); foldGhosts(foldForce); }
     }
     {
         ScopedTimer t(timers_.nodal);
@@ -153,6 +180,7 @@ void MpmSystem::stepImpl(Real dt)
         }
         {
             ScopedTimer t(timers_.nodal);
+            sumHalo(foldMomentum);
             foldGhosts(foldMomentum);
             massToVelocity<K, D>(grid_.velocity);
             applyFriction(grid_.velocity);
@@ -267,19 +295,51 @@ void MpmSystem::updateMassTolerance()
     const Index n = particles_.size();
     Real total = 0;
     for (Index p = 0; p < n; ++p) total += particles_.mass[p];
-    massTolerance_ = n ? 1e-10*total/n : 0;
+    const Real count = sumAll(Real(n));
+    total = sumAll(total);
+    massTolerance_ = count > 0 ? 1e-10*total/count : 0;
 }
 
-void MpmSystem::addGravity()
+void MpmSystem::addGravity(bool ownerSideOnly)
 {
     const auto& gr = options_.gravity;
     const Index n = lattice_.nNodes;
+    const char* owner = ownerSideOnly && subdomain_ ? subdomain_->ownerSide().data() : nullptr;
     #pragma omp parallel for if(worthThreads(n))
     for (Index I = 0; I < n; ++I)
     {
+        if (owner && !owner[I]) continue;
         const Real m = grid_.mass[I];
         for (int d = 0; d < 3; ++d) grid_.force[d][I] += m*gr[d];
     }
+}
+
+void MpmSystem::sumHalo(unsigned what)
+{
+    if (!subdomain_) return;
+    auto& g = grid_;
+    std::vector<Real*> a;
+    if (what & foldMass) { a.push_back(g.mass.data()); a.push_back(g.volume.data()); }
+    for (int d = 0; d < 3; ++d)
+    {
+        if (what & foldMomentum) a.push_back(g.momentum[d].data());
+        if (what & foldForce) a.push_back(g.force[d].data());
+    }
+    sumHalo(a);
+}
+
+void MpmSystem::sumHalo(const std::vector<Real*>& arrays)
+{
+    if (!subdomain_) return;
+    ScopedTimer t(timers_.halo);
+    subdomain_->sum(arrays);
+}
+
+void MpmSystem::copyHalo(const std::vector<Real*>& arrays) const
+{
+    if (!subdomain_) return;
+    ScopedTimer t(timers_.halo);
+    subdomain_->copy(arrays);
 }
 
 void MpmSystem::foldGhosts(unsigned what)
@@ -354,6 +414,7 @@ void MpmSystem::fillGhosts(std::array<std::vector<Real>, 3>& v) const
         const auto& sign = ghostSign_[&gh - boundary_.ghosts().data()];
         for (int d = 0; d < 3; ++d) v[d][gh.ghost] = sign[d]*v[d][gh.image];
     }
+    copyHalo({v[0].data(), v[1].data(), v[2].data()});
 }
 
 void MpmSystem::nodalVelocity(std::array<std::vector<Real>, 3>& v) const
@@ -480,6 +541,7 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
                 Mx[0][I] += N*u0; Mx[1][I] += N*u1; Mx[2][I] += N*u2;
             });
         });
+        sumHalo({nodeScratch_[0].data(), nodeScratch_[1].data(), nodeScratch_[2].data()});
         foldVector(nodeScratch_);
         #pragma omp parallel for if(worthThreads(nNodes))
         for (Index I = 0; I < nNodes; ++I)
@@ -628,21 +690,38 @@ void MpmSystem::updateStress(Real dt)
         P.eqPlasticStrain[p] = ep;
         P.volume[p] = P.volume0[p]*P.J(p);
     }
-    if (firstBad < n)
+    stopIfNonFinite(firstBad, "stress or deformation");
+}
+
+void MpmSystem::stopIfNonFinite(Index firstBad, const char* what)
+{
+    // Every rank takes the same decision and names the same point: the
+    // lowest id among the ranks' first bad points.
+    const auto& P = particles_;
+    const std::int64_t none = std::numeric_limits<std::int64_t>::max();
+    std::int64_t id = firstBad < P.size() ? P.id[firstBad] : none;
+    std::int64_t material = firstBad < P.size() ? P.material[firstBad] : -1;
+    if (subdomain_)
     {
-        std::ostringstream os;
-        os << "non-finite stress or deformation at step " << stepCount_ + 1
-           << " in material point id " << P.id[firstBad]
-           << " (material " << P.material[firstBad] << ")";
-        throw NonFiniteError(os.str(), stepCount_ + 1, P.id[firstBad]);
+        const Communicator& c = subdomain_->comm();
+        id = c.min(id);
+        if (id == none) return;
+        if (firstBad >= P.size() || P.id[firstBad] != id) material = -1;
+        material = c.max(material);
     }
+    if (id == none) return;
+    std::ostringstream os;
+    os << "non-finite " << what << " at step " << stepCount_ + 1
+       << " in material point id " << id;
+    if (std::string(what) != "velocity") os << " (material " << material << ")";
+    throw NonFiniteError(os.str(), stepCount_ + 1, id);
 }
 
 // Moves every point by the displacement G2P stored (dt already in it).
 void MpmSystem::movePoints()
 {
     auto& P = particles_;
-    const Lattice& L = lattice_;
+    const Lattice& L = domain_;   // walls and periodicity are the domain's
     const Index n = P.size();
     Index firstBad = n;
     const bool frozen = options_.freezePositions;
@@ -669,13 +748,49 @@ void MpmSystem::movePoints()
             P.x[a][p] = x;
         }
     }
-    if (firstBad < n)
+    stopIfNonFinite(firstBad, "velocity");
+}
+
+Index MpmSystem::migrate()
+{
+    if (!subdomain_) return 0;
+    ScopedTimer t(timers_.migration);
+    const Subdomain& sd = *subdomain_;
+    const Communicator& comm = sd.comm();
+    const int me = comm.rank(), np = comm.size();
+    auto& P = particles_;
+    const Index n = P.size();
+    std::vector<int> dest(n);
+    const std::int64_t none = std::numeric_limits<std::int64_t>::max();
+    std::int64_t lost = none;
+    Index sent = 0;
+    for (Index p = 0; p < n; ++p)
+    {
+        const Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
+        dest[p] = sd.ownerOf(x);
+        if (dest[p] < 0) lost = std::min<std::int64_t>(lost, P.id[p]);
+        sent += dest[p] != me;
+    }
+    lost = comm.min(lost);
+    if (lost != none)
     {
         std::ostringstream os;
-        os << "non-finite velocity at step " << stepCount_ + 1
-           << " in material point id " << P.id[firstBad];
-        throw NonFiniteError(os.str(), stepCount_ + 1, P.id[firstBad]);
+        os << "material point id " << lost << " moved beyond its processor's "
+           << "halo in one step (more than " << stencilReach(options_.shape)
+           << " cells): the time step is far too large for the Courant number";
+        throw std::runtime_error(os.str());
     }
+    std::vector<std::vector<char>> send(np), recv(np);
+    std::vector<char> keep(n);
+    for (Index p = 0; p < n; ++p)
+    {
+        keep[p] = dest[p] == me;
+        if (!keep[p]) P.pack(p, send[dest[p]]);
+    }
+    comm.exchange(send, recv, false);
+    if (sent) P.keepOnly(keep);
+    for (int q = 0; q < np; ++q) P.unpack(recv[q]);
+    return sent;
 }
 
 Real MpmSystem::maxSignalSpeed() const
@@ -695,7 +810,7 @@ Real MpmSystem::maxSignalSpeed() const
         const Real c = law.waveSpeed(P.J(p))*lighter + std::sqrt(v2);
         cmax = std::max(cmax, c);
     }
-    return cmax;
+    return maxAll(cmax);
 }
 
 Real MpmSystem::stableDeltaT(Real courant) const
@@ -713,9 +828,9 @@ Index MpmSystem::countOutside() const
     {
         for (int a = 0; a < 3; ++a)
         {
-            if (!lattice_.solved[a]) continue;
+            if (!domain_.solved[a]) continue;
             const Real x = particles_.x[a][p];
-            if (x < lattice_.origin[a] || x > lattice_.origin[a] + lattice_.length(a)) { ++count; break; }
+            if (x < domain_.origin[a] || x > domain_.origin[a] + domain_.length(a)) { ++count; break; }
         }
     }
     return count;

@@ -13,6 +13,7 @@
 #include "../grid/boundary.hpp"
 #include "../grid/gridState.hpp"
 #include "../grid/lattice.hpp"
+#include "../parallel/subdomain.hpp"
 #include "../particles/particles.hpp"
 #include "../transfer/binning.hpp"
 #include "stepOptions.hpp"
@@ -67,10 +68,37 @@ public:
     // Loops over fewer items than this run on one thread (tests lower it).
     static Index parallelThreshold;
 
-    void setup(const Lattice& lattice, const BoundarySpec& boundary, const StepOptions& options);
+    // lattice: the whole domain. subdomain (decomposed runs): this rank's
+    // box and halo; the points are then the ones in its cells, and every
+    // global quantity (time step, sums, the NaN stop) is reduced over ranks.
+    void setup
+    (
+        const Lattice& lattice, const BoundarySpec& boundary, const StepOptions& options,
+        std::shared_ptr<const Subdomain> subdomain = nullptr
+    );
 
+    // The lattice the arrays live on: the domain, or this rank's box.
     Lattice& lattice() { return lattice_; }
     const Lattice& lattice() const { return lattice_; }
+    // The whole domain (walls, periodicity, the seeding check).
+    const Lattice& domain() const { return domain_; }
+    const Subdomain* subdomain() const { return subdomain_.get(); }
+
+    // Nodes a stencil reaches beyond its point's cell: 1 (LH, QBS), 2 (CBS).
+    static int stencilReach(ShapeKind kind);
+
+    // Decomposed runs: sends every point whose cell another rank owns to
+    // that rank (all its fields); returns the number sent. Called by step()
+    // after the points move; call it after reading or seeding points too.
+    // Throws NonFiniteError-free std::runtime_error if a point moved beyond
+    // this rank's halo in one step.
+    Index migrate();
+
+    // Global reductions (identity in serial runs).
+    Real sumAll(Real x) const { return subdomain_ ? subdomain_->comm().sum(x) : x; }
+    Real maxAll(Real x) const { return subdomain_ ? subdomain_->comm().max(x) : x; }
+    Real minAll(Real x) const { return subdomain_ ? subdomain_->comm().min(x) : x; }
+    std::int64_t sumAll(std::int64_t x) const { return subdomain_ ? subdomain_->comm().sum(x) : x; }
     const Boundary& boundary() const { return boundary_; }
     const StepOptions& options() const { return options_; }
     Particles& particles() { return particles_; }
@@ -109,7 +137,7 @@ public:
     // coupling models that differ per material (drag); one extra P2G.
     void materialGrainVolume(std::vector<std::vector<Real>>& out);
 
-    // Number of points outside the lattice box (seeding checks).
+    // Number of points outside the domain (seeding checks), on this rank.
     Index countOutside() const;
 
 private:
@@ -126,6 +154,15 @@ private:
     template<class Fn> void forEachPointColoured(Fn&& fn) const;
 
     enum FoldWhat : unsigned { foldMass = 1, foldMomentum = 2, foldForce = 4 };
+    // Decomposed runs: adds every halo copy of the chosen arrays into its
+    // owner (after P2G, before the ghost fold), or sends the owners' values
+    // back to the copies (after the fill, before G2P). No-ops in serial.
+    void sumHalo(unsigned what);
+    void sumHalo(const std::vector<Real*>& arrays);
+    void copyHalo(const std::vector<Real*>& arrays) const;
+    // Stops every rank with the same message when any point went non-finite
+    // (firstBad: the local index of this rank's first bad point, or n).
+    void stopIfNonFinite(Index firstBad, const char* what);
     void foldGhosts(unsigned what);
     // Adds each ghost's scalar into its image, then copies images to ghosts
     void foldScalar(std::vector<Real>& a) const;
@@ -134,21 +171,24 @@ private:
     void fillGhosts(std::array<std::vector<Real>, 3>& v) const;
     void nodalVelocity(std::array<std::vector<Real>, 3>& v) const;
     void updateMassTolerance();
-    void addGravity();
+    // ownerSideOnly: after the halo sum (each node's weight counted once)
+    void addGravity(bool ownerSideOnly);
     template<class K, int D> void nodalUpdate(Real dt);
     template<class K, int D> void massToVelocity(std::array<std::vector<Real>, 3>& v);
     void applyFriction(std::array<std::vector<Real>, 3>& v) const;
     void updateStress(Real dt);
     void movePoints();
 
+    Lattice domain_;
     Lattice lattice_;
+    std::shared_ptr<const Subdomain> subdomain_;
     Boundary boundary_;
     StepOptions options_;
     Particles particles_;
     std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;
     GridState grid_;
     Binning binning_;
-    StepTimers timers_;
+    mutable StepTimers timers_;
     FluidCoupling coupling_;
     Index stepCount_ = 0;
     Real massTolerance_ = 0;

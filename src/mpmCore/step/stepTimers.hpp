@@ -10,8 +10,12 @@ struct StepTimers
     double nodal = 0;         // nodal momentum update + boundary conditions
     double g2p = 0;           // grid-to-particle gather + position update
     double constitutive = 0;  // deformation gradient + stress update
+    double migration = 0;     // decomposed runs: points to their new owners
+    // Decomposed runs: halo sums and copies, already inside p2g/nodal (a
+    // share of them, not a phase of its own).
+    double halo = 0;
 
-    double total() const { return p2g + nodal + g2p + constitutive; }
+    double total() const { return p2g + nodal + g2p + constitutive + migration; }
 };
 
 // Adds the lifetime of the scope to one timer.

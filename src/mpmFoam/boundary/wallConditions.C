@@ -2,6 +2,8 @@
 #include "choice.H"
 #include "cyclicPolyPatch.H"
 #include "emptyPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "processorPolyPatch.H"
 
 mpm::BoundarySpec Foam::readWallConditions
 (
@@ -24,9 +26,14 @@ mpm::BoundarySpec Foam::readWallConditions
 
     Info<< "Walls:" << nl;
     const scalar tol = 1e-6*L.h;
+    // Condition index of each patch. Decomposed, every rank has the same
+    // patches (some empty here) before its processor patches, so the
+    // indices agree and the ranks' faces can be combined below.
+    labelList patchCondition(mesh.boundaryMesh().size(), -1);
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
-        if (isA<emptyPolyPatch>(pp) || pp.empty()) continue;
+        if (isA<emptyPolyPatch>(pp) || isA<processorPolyPatch>(pp)) continue;
+        if (pp.empty() && !Pstream::parRun()) continue;
 
         mpm::WallCondition wc;
         if (isA<cyclicPolyPatch>(pp))
@@ -73,9 +80,20 @@ mpm::BoundarySpec Foam::readWallConditions
                 }
             }
         }
-        const int condition = int(spec.conditions.size());
+        patchCondition[pp.index()] = label(spec.conditions.size());
         spec.conditions.push_back(wc);
+    }
 
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        // A cyclic split by the decomposition is a processorCyclic patch:
+        // its faces are its cyclic's (periodic) faces.
+        label condition = patchCondition[pp.index()];
+        if (isA<processorCyclicPolyPatch>(pp))
+        {
+            condition = patchCondition[refCast<const processorCyclicPolyPatch>(pp).referPatchID()];
+        }
+        if (condition < 0) continue;
         forAll(pp, facei)
         {
             const point& fc = pp.faceCentres()[facei];
@@ -103,6 +121,14 @@ mpm::BoundarySpec Foam::readWallConditions
 
     for (int side = 0; side < 6; ++side)
     {
+        if (Pstream::parRun())
+        {
+            // Each rank knows its own boundary faces: combine.
+            List<int> fc(spec.faceCondition[side].begin(), spec.faceCondition[side].end());
+            Pstream::listCombineGather(fc, maxEqOp<int>());
+            Pstream::listCombineScatter(fc);
+            std::copy(fc.begin(), fc.end(), spec.faceCondition[side].begin());
+        }
         if (!L.solved[side/2]) { spec.faceCondition[side].clear(); continue; }
         for (int& c : spec.faceCondition[side])
         {

@@ -120,12 +120,22 @@ void Foam::writeMaterialPoints
 {
     passiveParticleCloud cloud(mesh, materialPointsCloudName, IDLList<passiveParticle>());
     const label n = points.size();
+    // A decomposed rank without points writes no cloud (as decomposePar)
+    if (n == 0) return;
     for (label p = 0; p < n; ++p)
     {
         const point x(points.x[0][p], points.x[1][p], points.x[2][p]);
         label ijk[3];
         ml.indicesOf(x, ijk);
-        cloud.addParticle(new passiveParticle(mesh, x, ml.cellOf(ijk[0], ijk[1], ijk[2])));
+        const label celli = ml.cellOf(ijk[0], ijk[1], ijk[2]);
+        if (celli < 0)
+        {
+            FatalErrorInFunction
+                << "Material point " << label(points.id[p]) << " at " << x
+                << " is not in a cell of processor " << Pstream::myProcNo()
+                << exit(FatalError);
+        }
+        cloud.addParticle(new passiveParticle(mesh, x, celli));
     }
     cloud.write();
 
@@ -146,7 +156,7 @@ void Foam::readMaterialPoints(const fvMesh& mesh, mpm::Particles& points)
 {
     passiveParticleCloud cloud(mesh, materialPointsCloudName);
     const label n = cloud.size();
-    if (n == 0)
+    if (returnReduce(n, sumOp<label>()) == 0)
     {
         FatalErrorInFunction
             << "No material points in " << mesh.time().timePath()/cloud::prefix
@@ -155,6 +165,7 @@ void Foam::readMaterialPoints(const fvMesh& mesh, mpm::Particles& points)
             << exit(FatalError);
     }
     points.resize(n);
+    if (n == 0) return;     // a decomposed rank may have none
     label i = 0;
     for (const passiveParticle& p : cloud)
     {

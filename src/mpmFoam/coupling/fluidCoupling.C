@@ -1,6 +1,7 @@
 #include "fluidCoupling.H"
 #include "choice.H"
 #include "uniformDimensionedFields.H"
+#include "Tuple2.H"
 
 namespace
 {
@@ -252,23 +253,40 @@ void Foam::fluidCoupling::updateFluidFraction()
         aF[celli] = mode_ == couplingMode::twoWay ? 1 - min(alphaS, alphaMax_) : 1.0;
     }
     alphaF.correctBoundaryConditions();
-    if (capped)
+    // Over all processors: the count, the largest alpha.solid and where,
+    // and the first maxListed capped cells (each rank's first ones, in
+    // processor order).
+    const label maxListed = 10;
+    const label cappedAll = returnReduce(capped, sumOp<label>());
+    if (cappedAll)
     {
-        // Every time and place: the cells (up to maxListed, then a count),
-        // each with its centre and projected alpha.solid
-        const label maxListed = 10;
-        Info<< "alphaMax " << alphaMax_ << " reached at time "
-            << mesh_.time().timeName() << " in " << capped << " cells; max "
-            << "alpha.solid " << maxAlphaS << " at " << mesh_.C()[maxCell] << nl
-            << "    capped cells (centre alpha.solid):";
-        label listed = 0;
+        const scalar maxAll = returnReduce(maxAlphaS, maxOp<scalar>());
+        vector where(maxCell >= 0 && maxAlphaS == maxAll ? mesh_.C()[maxCell] : vector::uniform(-GREAT));
+        reduce(where, maxOp<vector>());
+        List<List<Tuple2<point, scalar>>> listed(Pstream::nProcs());
+        auto& mine = listed[Pstream::myProcNo()];
         forAll(capped_, celli)
         {
             if (!capped_[celli]) continue;
-            if (listed++ == maxListed) break;
-            Info<< ' ' << mesh_.C()[celli] << ' ' << alphaSolid(celli);
+            if (mine.size() == maxListed) break;
+            mine.append(Tuple2<point, scalar>(mesh_.C()[celli], alphaSolid(celli)));
         }
-        if (capped > maxListed) Info<< " ... and " << capped - maxListed << " more";
+        Pstream::gatherList(listed);
+        Info<< "alphaMax " << alphaMax_ << " reached at time "
+            << mesh_.time().timeName() << " in " << cappedAll << " cells; max "
+            << "alpha.solid " << maxAll << " at " << where << nl
+            << "    capped cells (centre alpha.solid):";
+        label shown = 0;
+        for (const auto& l : listed)
+        {
+            for (const auto& c : l)
+            {
+                if (shown == maxListed) break;
+                Info<< ' ' << c.first() << ' ' << c.second();
+                ++shown;
+            }
+        }
+        if (cappedAll > shown) Info<< " ... and " << cappedAll - shown << " more";
         Info<< nl;
     }
 }

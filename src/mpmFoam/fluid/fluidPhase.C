@@ -2,6 +2,7 @@
 #include "constrainHbyA.H"
 #include "constrainPressure.H"
 #include "adjustPhi.H"
+#include "syncTools.H"
 
 bool Foam::fluidPhase::present(const fvMesh& mesh)
 {
@@ -262,10 +263,27 @@ void Foam::fluidPhase::setSolid(const volVectorField& Us, const boolList& capped
     // Consistent with the cap: the solid flux into a capped cell is zero,
     // as its fluid fraction cannot fall further (a sediment of overlapping
     // stress-free grains would otherwise drive fluid out of it).
-    // Grains never cross the domain boundary (every patch is an MPM wall):
-    // no solid flux there, which also keeps the pressure equation of a
-    // closed box compatible.
-    for (auto& pf : alphaPhiSolid_.boundaryFieldRef()) pf = 0;
+    // Grains never cross the domain boundary (every non-coupled patch is an
+    // MPM wall): no solid flux there, which also keeps the pressure
+    // equation of a closed box compatible. Processor and cyclic patches
+    // are not walls: they take the interior rule, with the neighbour
+    // cell's cap from the other side.
+    boolList nbrCapped;
+    syncTools::swapBoundaryCellList(mesh_, capped, nbrCapped);
+    const label nInternal = mesh_.nInternalFaces();
+    for (auto& pf : alphaPhiSolid_.boundaryFieldRef())
+    {
+        const polyPatch& pp = pf.patch().patch();
+        if (!pp.coupled()) { pf = 0; continue; }
+        const labelUList& fc = pp.faceCells();
+        forAll(pf, i)
+        {
+            if ((pf[i] > 0 && nbrCapped[pp.start() + i - nInternal]) || (pf[i] < 0 && capped[fc[i]]))
+            {
+                pf[i] = 0;
+            }
+        }
+    }
     scalarField& f = alphaPhiSolid_.primitiveFieldRef();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();

@@ -11,20 +11,10 @@ Foam::meshLattice::meshLattice(const fvMesh& mesh)
 
 void Foam::meshLattice::build()
 {
-    if (Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << "mpmFoam does not run decomposed cases yet (planned: halo "
-            << "exchange of lattice values and point migration)." << nl
-            << "Run it serially; decomposePar/reconstructPar do handle the "
-            << "materialPoints cloud and fields."
-            << exit(FatalError);
-    }
-
     const cellModel& hex = cellModel::ref(cellModel::HEX);
     const cellShapeList& shapes = mesh_.cellShapes();
     const pointField& pts = mesh_.points();
-    const boundBox bb(pts, false);
+    const boundBox bb(pts, true);   // the whole domain when decomposed
     const Vector<label>& solD = mesh_.solutionD();
 
     // Cell size from the first cell; every other cell must match it.
@@ -88,6 +78,12 @@ void Foam::meshLattice::build()
         FatalErrorInFunction << "Mesh has no solved direction" << exit(FatalError);
     }
     lattice_.h = h;
+    unsolvedSpan_ = bb.span();
+    cellVolume_ = 1;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        cellVolume_ *= lattice_.solved[d] ? h : bb.span()[d];
+    }
 
     for (direction d = 0; d < vector::nComponents; ++d)
     {
@@ -109,32 +105,79 @@ void Foam::meshLattice::build()
     {
         FatalErrorInFunction << e.what() << exit(FatalError);
     }
-    if (lattice_.nRealNodes != mesh_.nCells())
+    if (lattice_.nRealNodes != returnReduce(mesh_.nCells(), sumOp<label>()))
     {
         FatalErrorInFunction
             << "MPM needs the mesh to fill its bounding box " << bb
             << " with cells of size " << h << ": expected "
-            << lattice_.nRealNodes << " cells, found " << mesh_.nCells()
+            << lattice_.nRealNodes << " cells, found " << returnReduce(mesh_.nCells(), sumOp<label>())
             << exit(FatalError);
     }
 
     cellNode_.setSize(mesh_.nCells());
-    latticeCell_.setSize(mesh_.nCells(), -1);
+    cellIjk_.resize(mesh_.nCells());
+    if (!Pstream::parRun()) latticeCell_.setSize(mesh_.nCells(), -1);
     forAll(mesh_.cellCentres(), celli)
     {
         label ijk[3];
         indicesOf(mesh_.cellCentres()[celli], ijk);
+        cellIjk_[celli] = {int(ijk[0]), int(ijk[1]), int(ijk[2])};
         const label lin = lattice_.cellIndex(ijk[0], ijk[1], ijk[2]);
-        if (latticeCell_[lin] != -1)
+        const label other = Pstream::parRun()
+            ? localCell_.lookup(lin, -1) : latticeCell_[lin];
+        if (other != -1)
         {
             FatalErrorInFunction
-                << "Cells " << latticeCell_[lin] << " and " << celli
+                << "Cells " << other << " and " << celli
                 << " map to the same lattice node: the mesh is not a "
                 << "uniform Cartesian box" << exit(FatalError);
         }
-        latticeCell_[lin] = celli;
+        if (Pstream::parRun()) localCell_.set(lin, celli);
+        else latticeCell_[lin] = celli;
         cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
     }
+    if (Pstream::parRun() && mesh_.nCells() == 0)
+    {
+        FatalErrorInFunction
+            << "Processor " << Pstream::myProcNo() << " has no cells: "
+            << "decompose for fewer processors" << exit(FatalError);
+    }
+}
+
+void Foam::meshLattice::attach(const std::shared_ptr<const mpm::Subdomain>& subdomain)
+{
+    subdomain_ = subdomain;
+    forAll(cellNode_, celli)
+    {
+        const auto& r = cellIjk_[celli];
+        cellNode_[celli] = label(subdomain_->localNode(r[0], r[1], r[2]));
+    }
+}
+
+Foam::point Foam::meshLattice::cellCentre(label globalCell) const
+{
+    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
+    const label r[3] = {globalCell % n0, (globalCell/n0) % n1, globalCell/(n0*n1)};
+    point c;
+    for (direction d = 0; d < 3; ++d) c[d] = lattice_.origin[d] + (r[d] + 0.5)*lattice_.h;
+    // Unsolved directions: the mesh's mid-plane
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!lattice_.solved[d]) c[d] = lattice_.origin[d] + 0.5*unsolvedSpan_[d];
+    }
+    return c;
+}
+
+bool Foam::meshLattice::ownsLatticeCell(label globalCell) const
+{
+    if (!Pstream::parRun()) return true;
+    return localCell_.found(globalCell);
+}
+
+Foam::label Foam::meshLattice::cellOf(label i, label j, label k) const
+{
+    if (!Pstream::parRun()) return latticeCell_[lattice_.cellIndex(i, j, k)];
+    return localCell_.lookup(lattice_.cellIndex(i, j, k), -1);
 }
 
 void Foam::meshLattice::indicesOf(const point& x, label ijk[3]) const

@@ -32,7 +32,8 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
 {
     lattice_.report(Info);
     suspendPoolThreadTraps();
-    system_.setup(lattice_.lattice(), readWallConditions(mesh, lattice_, dict_), controls_.step);
+    const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_));
+    system_.setup(lattice_.lattice(), walls, controls_.step, decompose(walls));
     for (label m = 0; m < materials_.size(); ++m)
     {
         system_.materials().push_back(materials_.create(m));
@@ -51,17 +52,71 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
                 << exit(FatalError);
         }
     }
-    const mpm::Index outside = system_.countOutside();
+    const label outside = returnReduce(label(system_.countOutside()), sumOp<label>());
     if (outside)
     {
         FatalErrorInFunction
             << outside << " material points lie outside the mesh"
             << exit(FatalError);
     }
-    Info<< "Material points: " << label(P.size()) << ", OpenMP threads: "
-        << omp_get_max_threads() << nl << endl;
+    // decomposePar places a point by its tracked cell; the lattice owner of
+    // a point on a processor face may be the other rank.
+    try
+    {
+        system_.migrate();
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction << e.what() << exit(FatalError);
+    }
+    Info<< "Material points: " << returnReduce(label(P.size()), sumOp<label>())
+        << ", OpenMP threads: " << omp_get_max_threads();
+    if (Pstream::parRun()) Info<< " per processor, processors: " << Pstream::nProcs();
+    Info<< nl;
+    reportBalance(Info);
+    Info<< endl;
     system_.mapToGrid();
     updateFields();
+}
+
+std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
+(
+    const mpm::BoundarySpec& walls
+)
+{
+    if (!Pstream::parRun()) return nullptr;
+    auto sd = std::make_shared<mpm::Subdomain>();
+    const int reach = mpm::MpmSystem::stencilReach(controls_.step.shape);
+    try
+    {
+        sd->build
+        (
+            lattice_.lattice(), lattice_.cellIndices(), reach,
+            mpm::Boundary::periodicAxes(lattice_.lattice(), walls), comm_
+        );
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction << e.what() << exit(FatalError);
+    }
+    lattice_.attach(sd);
+    const label halo = label(sd->haloNodes());
+    Info<< "Decomposed lattice: " << Pstream::nProcs() << " processors, halo "
+        << reach << " node layers; halo nodes per processor: max "
+        << returnReduce(halo, maxOp<label>()) << ", total "
+        << returnReduce(halo, sumOp<label>()) << "; halo neighbours: max "
+        << returnReduce(label(sd->neighbourCount()), maxOp<label>()) << nl;
+    return sd;
+}
+
+void Foam::mpmModel::reportBalance(Ostream& os) const
+{
+    if (!Pstream::parRun()) return;
+    const label n = label(system_.particles().size());
+    const label total = returnReduce(n, sumOp<label>());
+    os  << "MPM: points per processor min " << returnReduce(n, minOp<label>())
+        << ", mean " << scalar(total)/Pstream::nProcs() << ", max "
+        << returnReduce(n, maxOp<label>()) << nl;
 }
 
 void Foam::mpmModel::warnIfAboveCourantLimit(scalar dt, const char* source) const
@@ -127,6 +182,14 @@ void Foam::mpmModel::evolve(scalar dt)
             << "(timeStep courant) or check the material coefficients."
             << exit(FatalError);
     }
+    catch (const std::runtime_error& e)
+    {
+        // A point moved beyond its processor's halo (decomposed runs)
+        FatalErrorInFunction
+            << "Stopping at time " << mesh_.time().timeName() << ": "
+            << e.what() << nl << "Nothing was written for this time."
+            << exit(FatalError);
+    }
     ++steps_;
 }
 
@@ -180,11 +243,18 @@ void Foam::mpmModel::report(Ostream& os)
                              P.sigma[3][p], P.sigma[4][p], P.sigma[5][p]};
         se += P.volume0[p]*system_.material(P.material[p]).storedEnergy(sig, F);
     }
+    reduce(ke, sumOp<scalar>());
+    reduce(se, sumOp<scalar>());
+    reduce(mass, sumOp<scalar>());
+    reduce(mom, sumOp<vector>());
+    reduce(vmax, maxOp<scalar>());
     const vector vcm(mass > 0 ? mom/mass : vector(Zero));
     os  << "MPM: step " << label(system_.stepCount()) << ", kinetic energy "
         << ke << ", elastic energy " << se << ", max |U| "
         << Foam::sqrt(vmax) << nl;
+    reportBalance(os);
 
+    if (!Pstream::master()) return;
     if (!summaryFile_.valid())
     {
         const fileName dir
@@ -208,26 +278,40 @@ void Foam::mpmModel::report(Ostream& os)
 
 void Foam::mpmModel::summary(Ostream& os, scalar fluidTime) const
 {
-    const mpm::StepTimers& t = system_.timers();
-    const scalar total = t.total() + ioTime_ + max(fluidTime, scalar(0));
+    // The slowest rank's time of each phase: what the run waited for.
+    mpm::StepTimers t = system_.timers();
+    for (double* x : {&t.p2g, &t.nodal, &t.g2p, &t.constitutive, &t.migration, &t.halo})
+    {
+        reduce(*x, maxOp<double>());
+    }
+    const scalar io = returnReduce(ioTime_, maxOp<scalar>());
+    fluidTime = returnReduce(fluidTime, maxOp<scalar>());
+    const scalar total = t.total() + io + max(fluidTime, scalar(0));
+    const label nPoints = returnReduce(label(system_.particles().size()), sumOp<label>());
     auto line = [&](const char* name, scalar s)
     {
         os  << "    " << name << tab << s << " s" << tab
             << (total > 0 ? 100*s/total : 0) << " %" << nl;
     };
-    os  << nl << "MPM summary: " << label(system_.particles().size())
+    os  << nl << "MPM summary: " << nPoints
         << " material points, " << steps_ << " steps";
     if (steps_ > 0 && t.total() > 0)
     {
-        os  << ", " << system_.particles().size()*scalar(steps_)/t.total()/1e6
+        os  << ", " << nPoints*scalar(steps_)/t.total()/1e6
             << " M point-steps/s";
     }
+    if (Pstream::parRun()) os << ", " << Pstream::nProcs() << " processors";
     os  << nl << "  Cost breakdown:" << nl;
     line("P2G          ", t.p2g);
     line("nodal update ", t.nodal);
     line("G2P          ", t.g2p);
     line("constitutive ", t.constitutive);
-    line("I/O          ", ioTime_);
+    if (Pstream::parRun())
+    {
+        line("  of which halo", t.halo);
+        line("migration    ", t.migration);
+    }
+    line("I/O          ", io);
     if (fluidTime >= 0) line("fluid (PIMPLE)", fluidTime);
     os  << endl;
 }

@@ -4,6 +4,7 @@
 #include "Time.H"
 #include "symmTensor.H"
 #include "choice.H"
+#include <algorithm>
 
 namespace
 {
@@ -17,6 +18,35 @@ word geometryType(const word& t)
     if (t == "sphere") return "searchableSphere";
     if (t == "stl") return "triSurfaceMesh";
     return t;
+}
+
+// Lattice cells (global linear index, lattice order) whose sub-cell points
+// can fall in this rank's cells: its own and, decomposed, one layer more.
+std::vector<label> sourceCells(const meshLattice& ml)
+{
+    const mpm::Lattice& L = ml.lattice();
+    std::vector<label> cells;
+    for (const auto& r : ml.cellIndices())
+    {
+        for (int dk = -1; dk <= 1; ++dk)
+        for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+        {
+            const int d[3] = {di, dj, dk};
+            if (!Pstream::parRun() && (di || dj || dk)) continue;
+            int c[3];
+            bool ok = true;
+            for (int a = 0; a < 3; ++a)
+            {
+                c[a] = r[a] + d[a];
+                ok = ok && c[a] >= 0 && c[a] < L.nCells[a];
+            }
+            if (ok) cells.push_back(label(L.cellIndex(c[0], c[1], c[2])));
+        }
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    return cells;
 }
 
 // Initial velocity at x for a region's velocity dictionary.
@@ -71,6 +101,7 @@ Foam::label Foam::seedRegions
 {
     const mpm::Lattice& L = ml.lattice();
     const label n0 = points.size();
+    label idBase = returnReduce(n0, sumOp<label>());
 
     for (const entry& e : regions)
     {
@@ -163,14 +194,18 @@ Foam::label Foam::seedRegions
         const scalar solidFraction = readBounded(d, "solidFraction", 1, SMALL, 1, false);
         const scalar rho = materials.rho(mat);
 
-        // Candidate points: a regular sub-lattice in every cell.
+        // Candidate points: a regular sub-lattice in every cell. Decomposed,
+        // a rank keeps the points that fall in its cells (a shifted pattern
+        // can reach a neighbour cell), and ids are numbered as in a serial
+        // run: by region, source cell (lattice order) and sub-point.
         const label perCell = ppc.x()*ppc.y()*ppc.z();
-        pointField candidates(mesh.nCells()*perCell);
-        scalarField cellVol(candidates.size());
+        const scalar pointVol = ml.cellVolume()/perCell;
+        const std::vector<label> sources(sourceCells(ml));
+        pointField candidates(sources.size()*perCell);
         label c = 0;
-        forAll(mesh.cellCentres(), celli)
+        for (const label src : sources)
         {
-            const point& cc = mesh.cellCentres()[celli];
+            const point cc(ml.cellCentre(src));
             for (label k = 0; k < ppc.z(); ++k)
             for (label j = 0; j < ppc.y(); ++j)
             for (label i = 0; i < ppc.x(); ++i)
@@ -181,32 +216,58 @@ Foam::label Foam::seedRegions
                 {
                     if (L.solved[a]) x[a] += ((idx[a] + 0.5)/ppc[a] - 0.5 + shift[a])*L.h;
                 }
-                cellVol[c] = mesh.cellVolumes()[celli]/perCell;
                 candidates[c++] = x;
             }
         }
         List<volumeType> inside;
         surf->getVolumeType(candidates, inside);
 
-        label added = 0;
-        forAll(candidates, i)
+        // Points per source cell, counted by the rank owning it; their
+        // global prefix numbers the points.
+        labelList count(L.nCells[0]*L.nCells[1]*L.nCells[2], 0);
+        forAll(sources, si)
         {
-            if (inside[i] != volumeType::INSIDE) continue;
-            const point& x = candidates[i];
-            const vector v(velocity(x));
-            const mpm::Index p = points.add
-            (
-                {x.x(), x.y(), x.z()}, {v.x(), v.y(), v.z()},
-                rho*solidFraction*cellVol[i], cellVol[i], int(mat)
-            );
-            points.sigma[mpm::XX][p] = sigma0.xx();
-            points.sigma[mpm::YY][p] = sigma0.yy();
-            points.sigma[mpm::ZZ][p] = sigma0.zz();
-            points.sigma[mpm::XY][p] = sigma0.xy();
-            points.sigma[mpm::YZ][p] = sigma0.yz();
-            points.sigma[mpm::XZ][p] = sigma0.xz();
-            ++added;
+    if (!ml.ownsLatticeCell(sources[si])) continue;
+            for (label q = 0; q < perCell; ++q) count[sources[si]] += inside[si*perCell + q] == volumeType::INSIDE;
         }
+        if (Pstream::parRun())
+        {
+            Pstream::listCombineGather(count, plusEqOp<label>());
+            Pstream::listCombineScatter(count);
+        }
+        labelList first(count.size(), 0);
+        for (label i = 1; i < count.size(); ++i) first[i] = first[i - 1] + count[i - 1];
+        const label regionTotal = count.empty() ? 0 : first.last() + count.last();
+
+        forAll(sources, si)
+        {
+            label k = 0;
+            for (label q = 0; q < perCell; ++q)
+            {
+                const label i = si*perCell + q;
+                if (inside[i] != volumeType::INSIDE) continue;
+                const label id = idBase + first[sources[si]] + k++;
+                const point& x = candidates[i];
+                label ijk[3];
+                ml.indicesOf(x, ijk);
+                if (ml.cellOf(ijk[0], ijk[1], ijk[2]) < 0) continue;   // another rank's
+                const vector v(velocity(x));
+                const mpm::Index p = points.add
+                (
+                    {x.x(), x.y(), x.z()}, {v.x(), v.y(), v.z()},
+                    rho*solidFraction*pointVol, pointVol, int(mat)
+                );
+                points.id[p] = id;
+                points.sigma[mpm::XX][p] = sigma0.xx();
+                points.sigma[mpm::YY][p] = sigma0.yy();
+                points.sigma[mpm::ZZ][p] = sigma0.zz();
+                points.sigma[mpm::XY][p] = sigma0.xy();
+                points.sigma[mpm::YZ][p] = sigma0.yz();
+                points.sigma[mpm::XZ][p] = sigma0.xz();
+            }
+        }
+        idBase += regionTotal;
+        const label added = regionTotal;
         Info<< "    " << added << " points of material "
             << materials.names()[mat] << ", " << ppc << " per cell" << nl;
         if (added == 0)
@@ -214,6 +275,5 @@ Foam::label Foam::seedRegions
             WarningInFunction << "Region " << name << " contains no points" << nl;
         }
     }
-    for (label p = n0; p < points.size(); ++p) points.id[p] = p;
     return points.size() - n0;
 }

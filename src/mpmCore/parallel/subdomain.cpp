@@ -1,0 +1,363 @@
+#include "subdomain.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace mpm {
+
+namespace {
+
+std::string cellText(const int r[3])
+{
+    return "(" + std::to_string(r[0]) + " " + std::to_string(r[1]) + " " + std::to_string(r[2]) + ")";
+}
+
+} // namespace
+
+Index Subdomain::globalCellId(const int r[3]) const
+{
+    return global_.cellIndex(r[0], r[1], r[2]);
+}
+
+Index Subdomain::localNode(int i, int j, int k) const
+{
+    const int r[3] = {i, j, k};
+    int l[3];
+    for (int a = 0; a < 3; ++a)
+    {
+        l[a] = r[a] - boxLo_[a];
+        if (l[a] < 0 || l[a] >= local_.nodes[a]) return -1;
+    }
+    return local_.node(l[0], l[1], l[2]);
+}
+
+bool Subdomain::ownsCell(Index id) const
+{
+    return ownerOfCell(id) == comm_->rank();
+}
+
+int Subdomain::ownerOfCell(Index id) const
+{
+    const Index n0 = global_.nCells[0], n1 = global_.nCells[1];
+    const int r[3] = {int(id % n0), int((id/n0) % n1), int(id/(n0*n1))};
+    const Index l = localNode(r[0], r[1], r[2]);
+    if (l >= 0 && boxOwner_[l] >= 0) return boxOwner_[l];
+    const auto it = owner_.find(id);
+    return it == owner_.end() ? -1 : it->second;
+}
+
+int Subdomain::ownerOf(const Real* x) const
+{
+    int r[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!global_.solved[a]) continue;
+        const Index c = Index(std::floor((x[a] - global_.origin[a])/global_.h));
+        r[a] = int(std::min<Index>(std::max<Index>(c, 0), global_.nCells[a] - 1));
+    }
+    return ownerOfCell(globalCellId(r));
+}
+
+void Subdomain::build
+(
+    const Lattice& global,
+    const std::vector<std::array<int, 3>>& owned,
+    int reach,
+    const std::array<bool, 3>& periodic,
+    const Communicator& comm
+)
+{
+    comm_ = &comm;
+    global_ = global;
+    periodic_ = periodic;
+    const int me = comm.rank(), np = comm.size();
+    const int pad = global.pad;
+    if (owned.empty())
+    {
+        throw std::invalid_argument("subdomain: processor " + std::to_string(me) + " owns no cells");
+    }
+
+    // Bounding box of the owned cells, then the box lattice around it.
+    std::array<int, 3> lo{{std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), std::numeric_limits<int>::max()}};
+    std::array<int, 3> hi{{-1, -1, -1}};
+    for (const auto& c : owned)
+    {
+        for (int a = 0; a < 3; ++a) { lo[a] = std::min(lo[a], c[a]); hi[a] = std::max(hi[a], c[a]); }
+    }
+    local_ = global;
+    local_.checkGhostLayers = false;
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!global.solved[a]) { boxLo_[a] = boxHi_[a] = 0; offset_[a] = 0; continue; }
+        const int n = global.nCells[a];
+        int bl = lo[a] - pad, bh = hi[a] + pad;
+        if (!periodic[a])
+        {
+            // Mirror ghosts of owned nodes next to a wall are folded here.
+            if (lo[a] < pad) bl = std::min(bl, -1 - std::min(hi[a], pad - 1));
+            if (hi[a] >= n - pad) bh = std::max(bh, 2*n - 1 - std::max(lo[a], n - pad));
+        }
+        bl = std::max(bl, -pad);
+        bh = std::min(bh, n - 1 + pad);
+        boxLo_[a] = bl; boxHi_[a] = bh;
+        offset_[a] = bl + pad;
+        local_.origin[a] = global.origin[a] + offset_[a]*global.h;
+        local_.nCells[a] = bh - bl + 1 - 2*pad;
+    }
+    local_.finalise();
+    const Index nNodes = local_.nNodes;
+
+    // Box coordinates of local node l
+    auto coords = [&](Index l, int r[3])
+    {
+        Index rest = l;
+        for (int a = 2; a >= 0; --a)
+        {
+            const Index s = local_.stride[a];
+            const int li = int(rest/s);
+            rest -= Index(li)*s;
+            r[a] = li + boxLo_[a];
+        }
+    };
+    // Canonical node (periodic directions wrapped) and its real image (walls
+    // reflected) of global real coordinates r.
+    auto canonical = [&](const int r[3], int c[3], int img[3])
+    {
+        for (int a = 0; a < 3; ++a)
+        {
+            const int n = global.nCells[a];
+            c[a] = r[a];
+            if (global.solved[a] && periodic[a]) c[a] = ((r[a] % n) + n) % n;
+            img[a] = c[a];
+            if (img[a] < 0) img[a] = -1 - img[a];
+            else if (img[a] >= n) img[a] = 2*n - 1 - img[a];
+        }
+    };
+
+    // Owners: own cells first; every other canonical image of a box node is
+    // asked of the ranks whose owned bounding boxes contain it.
+    boxOwner_.assign(nNodes, -1);
+    for (const auto& c : owned) boxOwner_[localNode(c[0], c[1], c[2])] = me;
+    owner_.clear();
+
+    std::vector<std::int64_t> myBox{lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]}, boxes;
+    comm.allGather(myBox, boxes);
+
+    std::vector<Index> needed;
+    for (Index l = 0; l < nNodes; ++l)
+    {
+        int r[3], c[3], img[3];
+        coords(l, r);
+        canonical(r, c, img);
+        const Index li = localNode(img[0], img[1], img[2]);
+        if (li >= 0 && boxOwner_[li] == me) continue;
+        needed.push_back(globalCellId(img));
+    }
+    std::sort(needed.begin(), needed.end());
+    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+
+    std::vector<std::vector<char>> send(np), recv(np);
+    const Index n0 = global.nCells[0], n1 = global.nCells[1];
+    for (const Index id : needed)
+    {
+        const int r[3] = {int(id % n0), int((id/n0) % n1), int(id/(n0*n1))};
+        for (int q = 0; q < np; ++q)
+        {
+            if (q == me) continue;
+            bool inside = true;
+            for (int a = 0; a < 3; ++a) inside = inside && r[a] >= boxes[6*q + a] && r[a] <= boxes[6*q + 3 + a];
+            if (inside) appendBytes(send[q], &id, 1);
+        }
+    }
+    comm.exchange(send, recv, false);
+    // Answer: the queried cells this rank owns
+    std::vector<std::vector<char>> answer(np), answered(np);
+    for (int s = 0; s < np; ++s)
+    {
+        const std::size_t n = recv[s].size()/sizeof(Index);
+        std::size_t at = 0;
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            Index id;
+            readBytes(recv[s], at, &id, 1);
+            const int r[3] = {int(id % n0), int((id/n0) % n1), int(id/(n0*n1))};
+            const Index l = localNode(r[0], r[1], r[2]);
+            if (l >= 0 && boxOwner_[l] == me) appendBytes(answer[s], &id, 1);
+        }
+    }
+    comm.exchange(answer, answered, false);
+    for (int q = 0; q < np; ++q)
+    {
+        const std::size_t n = answered[q].size()/sizeof(Index);
+        std::size_t at = 0;
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            Index id;
+            readBytes(answered[q], at, &id, 1);
+            owner_[id] = q;
+        }
+    }
+    for (Index l = 0; l < nNodes; ++l)
+    {
+        int r[3];
+        coords(l, r);
+        bool real = true;
+        for (int a = 0; a < 3; ++a) real = real && r[a] >= 0 && r[a] < global.nCells[a];
+        if (!real || boxOwner_[l] >= 0) continue;
+        const auto it = owner_.find(globalCellId(r));
+        if (it != owner_.end()) boxOwner_[l] = it->second;
+    }
+
+    // Nodes a stencil of an owned cell can reach: the owned cells dilated
+    // by `reach` along each solved axis in turn.
+    std::vector<char> near(nNodes, 0), grown(nNodes, 0);
+    for (const auto& c : owned) near[localNode(c[0], c[1], c[2])] = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!global.solved[a]) continue;
+        std::fill(grown.begin(), grown.end(), 0);
+        const Index s = local_.stride[a];
+        for (Index l = 0; l < nNodes; ++l)
+        {
+            if (!near[l]) continue;
+            const int li = int((l/s) % local_.nodes[a]);
+            for (int d = -reach; d <= reach; ++d)
+            {
+                if (li + d >= 0 && li + d < local_.nodes[a]) grown[l + d*s] = 1;
+            }
+        }
+        near.swap(grown);
+    }
+
+    // Owner side, copies and their owners
+    ownerSide_.assign(nNodes, 0);
+    copyIdx_.assign(np, {});
+    ownerIdx_.assign(np, {});
+    selfPairs_.clear();
+    std::vector<std::vector<char>> ids(np), idsIn(np);
+    for (Index l = 0; l < nNodes; ++l)
+    {
+        int r[3], c[3], img[3];
+        coords(l, r);
+        canonical(r, c, img);
+        const int q = ownerOfCell(globalCellId(img));
+        const bool isCanonical = r[0] == c[0] && r[1] == c[1] && r[2] == c[2];
+        if (q == me && isCanonical) { ownerSide_[l] = 1; continue; }
+        if (!near[l]) continue;
+        if (q < 0)
+        {
+            throw std::runtime_error
+            (
+                "subdomain: no processor owns cell " + cellText(img)
+              + ", which processor " + std::to_string(me) + "'s stencils reach"
+            );
+        }
+        if (q == me)
+        {
+            const Index owner = localNode(c[0], c[1], c[2]);
+            if (owner < 0) throw std::logic_error("subdomain: periodic image outside the box");
+            selfPairs_.emplace_back(l, owner);
+            continue;
+        }
+        const Index gid = global.node(c[0] + global.padOf(0), c[1] + global.padOf(1), c[2] + global.padOf(2));
+        copyIdx_[q].push_back(l);
+        appendBytes(ids[q], &gid, 1);
+    }
+    comm.exchange(ids, idsIn, false);
+    for (int s = 0; s < np; ++s)
+    {
+        const std::size_t n = idsIn[s].size()/sizeof(Index);
+        std::size_t at = 0;
+        ownerIdx_[s].resize(n);
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            Index gid;
+            readBytes(idsIn[s], at, &gid, 1);
+            int r[3];
+            Index rest = gid;
+            for (int a = 2; a >= 0; --a)
+            {
+                const Index st = global.stride[a];
+                r[a] = int(rest/st) - global.padOf(a);
+                rest -= (r[a] + global.padOf(a))*st;
+            }
+            const Index l = localNode(r[0], r[1], r[2]);
+            if (l < 0 || !ownerSide_[l])
+            {
+                throw std::logic_error
+                (
+                    "subdomain: processor " + std::to_string(s) + " sends node "
+                  + cellText(r) + " that processor " + std::to_string(me) + " does not own"
+                );
+            }
+            ownerIdx_[s][k] = l;
+        }
+    }
+    sendBuf_.assign(np, {});
+    recvBuf_.assign(np, {});
+}
+
+void Subdomain::sum(const std::vector<Real*>& arrays) const
+{
+    const int np = comm_->size(), me = comm_->rank();
+    const std::size_t k = arrays.size();
+    for (int q = 0; q < np; ++q)
+    {
+        auto& b = sendBuf_[q];
+        b.resize(copyIdx_[q].size()*k*sizeof(Real));
+        Real* v = reinterpret_cast<Real*>(b.data());
+        for (const Real* a : arrays) for (const Index l : copyIdx_[q]) *v++ = a[l];
+        recvBuf_[q].resize(ownerIdx_[q].size()*k*sizeof(Real));
+    }
+    comm_->exchange(sendBuf_, recvBuf_, true);
+    // Fixed order (rank by rank): the sums do not depend on message timing.
+    for (int s = 0; s < np; ++s)
+    {
+        if (s == me)
+        {
+            for (Real* a : arrays) for (const auto& pr : selfPairs_) a[pr.second] += a[pr.first];
+            continue;
+        }
+        const Real* v = reinterpret_cast<const Real*>(recvBuf_[s].data());
+        for (Real* a : arrays) for (const Index l : ownerIdx_[s]) a[l] += *v++;
+    }
+}
+
+void Subdomain::copy(const std::vector<Real*>& arrays) const
+{
+    const int np = comm_->size();
+    const std::size_t k = arrays.size();
+    for (int q = 0; q < np; ++q)
+    {
+        auto& b = sendBuf_[q];
+        b.resize(ownerIdx_[q].size()*k*sizeof(Real));
+        Real* v = reinterpret_cast<Real*>(b.data());
+        for (const Real* a : arrays) for (const Index l : ownerIdx_[q]) *v++ = a[l];
+        recvBuf_[q].resize(copyIdx_[q].size()*k*sizeof(Real));
+    }
+    comm_->exchange(sendBuf_, recvBuf_, true);
+    for (Real* a : arrays) for (const auto& pr : selfPairs_) a[pr.first] = a[pr.second];
+    for (int q = 0; q < np; ++q)
+    {
+        const Real* v = reinterpret_cast<const Real*>(recvBuf_[q].data());
+        for (Real* a : arrays) for (const Index l : copyIdx_[q]) a[l] = *v++;
+    }
+}
+
+Index Subdomain::haloNodes() const
+{
+    Index n = 0;
+    for (const auto& c : copyIdx_) n += Index(c.size());
+    return n;
+}
+
+int Subdomain::neighbourCount() const
+{
+    int n = 0;
+    for (std::size_t q = 0; q < copyIdx_.size(); ++q) n += !copyIdx_[q].empty() || !ownerIdx_[q].empty();
+    return n;
+}
+
+} // namespace mpm

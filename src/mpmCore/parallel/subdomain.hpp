@@ -1,0 +1,96 @@
+// One rank's share of a decomposed lattice: the cells it owns (from the
+// mesh decomposition, any shape), a box lattice around them, and the halo
+// that makes P2G and G2P on that box equal to the serial step.
+//
+// The box is the owned cells' bounding box grown by the lattice's ghost
+// layers (and, next to a wall, by the mirror ghosts of owned nodes), in the
+// global lattice's coordinates. Every box node is one of:
+//   - owner side: a real node of an owned cell, or a wall mirror ghost whose
+//     image is owned here (folded here by the Boundary, as in serial);
+//   - a copy: any other node a stencil of an owned cell can reach (`reach`
+//     layers: 1 for linear hats and quadratic B-splines, 2 for cubic). Its
+//     owner is the rank owning its canonical node (periodic directions
+//     wrapped), found by querying the ranks whose boxes hold it, so
+//     diagonal neighbours and periodic partners count, whether or not they
+//     share a processor patch;
+//   - unused (never written or read).
+// sum() adds every copy into its owner (after P2G); copy() sends the
+// owner's value back to every copy (before G2P). Nothing assumes that a
+// subdomain is a box or that it is thicker than the stencil: owners are
+// looked up per node, not per neighbour.
+#pragma once
+#include "../grid/lattice.hpp"
+#include "communicator.hpp"
+#include <array>
+#include <unordered_map>
+#include <vector>
+
+namespace mpm {
+
+class Subdomain
+{
+public:
+    // global: the whole box (finalised); owned: global real (i, j, k) of the
+    // cells this rank owns (non-empty); periodic: per axis.
+    void build
+    (
+        const Lattice& global,
+        const std::vector<std::array<int, 3>>& owned,
+        int reach,
+        const std::array<bool, 3>& periodic,
+        const Communicator& comm
+    );
+
+    const Communicator& comm() const { return *comm_; }
+    const Lattice& global() const { return global_; }
+    const Lattice& local() const { return local_; }
+
+    // Global real index of local real node 0, per axis.
+    const std::array<int, 3>& offset() const { return offset_; }
+
+    // Whether this rank owns the global cell (linear index, x fastest).
+    bool ownsCell(Index globalCell) const;
+
+    // Rank owning the cell that contains x (clamped into the box domain;
+    // positions are already wrapped in periodic directions); -1 if it is
+    // not within this rank's reach (moved too far in one step).
+    int ownerOf(const Real* x) const;
+
+    // Local padded node of global real (i, j, k), or -1 outside the box.
+    Index localNode(int i, int j, int k) const;
+
+    // 1 for owner-side nodes (see above); the rest are copies or unused.
+    const std::vector<char>& ownerSide() const { return ownerSide_; }
+
+    // Halo exchange of nodal arrays (each of local().nNodes values).
+    void sum(const std::vector<Real*>& arrays) const;
+    void copy(const std::vector<Real*>& arrays) const;
+
+    // Values sent per sum() or copy() per array, summed over ranks'
+    // messages from here (for the cost log and the docs' estimate).
+    Index haloNodes() const;
+    int neighbourCount() const;
+
+private:
+    Index globalCellId(const int r[3]) const;
+    int ownerOfCell(Index globalCell) const;
+
+    const Communicator* comm_ = nullptr;
+    Lattice global_, local_;
+    std::array<int, 3> offset_{0, 0, 0};
+    std::array<int, 3> boxLo_{0, 0, 0}, boxHi_{0, 0, 0};  // global real, inclusive
+    std::array<bool, 3> periodic_{false, false, false};
+
+    std::vector<char> ownerSide_;
+    std::vector<int> boxOwner_;              // owner of each box real cell (-1: none)
+    std::unordered_map<Index, int> owner_;   // canonical cells outside the box
+
+    // Halo lists per rank: copies here -> owner there (sendIdx[r][k] goes
+    // to recvIdx on rank r at the same k), and owners here <- copies there.
+    std::vector<std::vector<Index>> copyIdx_, ownerIdx_;
+    std::vector<std::pair<Index, Index>> selfPairs_;   // (copy, owner) here
+
+    mutable std::vector<std::vector<char>> sendBuf_, recvBuf_;
+};
+
+} // namespace mpm
