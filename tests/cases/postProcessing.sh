@@ -2,8 +2,7 @@
 #------------------------------------------------------------------------------
 # What users do after a run: the material points must be readable by
 # ParaView's built-in OpenFOAM reader (pvbatch) and foamToVTK, and survive
-# decomposePar / reconstructPar. A decomposed mpmFoam run stops with a clear
-# message (parallel MPM is not implemented yet).
+# decomposePar / reconstructPar (decomposed runs themselves: parallel.sh).
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -74,9 +73,5 @@ import mpmPost, numpy as np
 a = mpmPost.read_cloud_field('$c', '$last.orig', 'mass'); b = mpmPost.read_cloud_field('$c', '$last', 'mass')
 print(abs(a.sum() - b.sum())/a.sum() if len(a) == len(b) else 1)")
 check "reconstructPar restores the cloud (total mass)" "d <= 1e-12" d="$d"
-
-# A decomposed run is refused clearly, not run wrongly
-expectFailure "parallel run refused with a clear message" "does not run decomposed cases yet" \
-    bash -c "cd '$c' && mpirun -np 2 mpmFoam -parallel"
 
 finish

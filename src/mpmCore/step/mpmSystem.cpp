@@ -790,6 +790,7 @@ Index MpmSystem::migrate()
     comm.exchange(send, recv, false);
     if (sent) P.keepOnly(keep);
     for (int q = 0; q < np; ++q) P.unpack(recv[q]);
+    migrated_ += sent;
     return sent;
 }
 

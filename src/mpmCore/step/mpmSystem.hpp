@@ -93,6 +93,8 @@ public:
     // Throws NonFiniteError-free std::runtime_error if a point moved beyond
     // this rank's halo in one step.
     Index migrate();
+    // Points this rank has sent to others so far.
+    Index migratedCount() const { return migrated_; }
 
     // Global reductions (identity in serial runs).
     Real sumAll(Real x) const { return subdomain_ ? subdomain_->comm().sum(x) : x; }
@@ -191,6 +193,7 @@ private:
     mutable StepTimers timers_;
     FluidCoupling coupling_;
     Index stepCount_ = 0;
+    Index migrated_ = 0;
     Real massTolerance_ = 0;
 
     // Scratch per point: velocity gradient and displacement over the step.

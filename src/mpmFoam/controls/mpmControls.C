@@ -2,6 +2,7 @@
 #include "choice.H"
 #include "uniformDimensionedFields.H"
 #include "Time.H"
+#include "step/mpmSystem.hpp"
 
 Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
 {
@@ -39,6 +40,11 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
     step.freezePositions = d.getOrDefault<bool>("freezePositions", false);
     Info<< "    freezePositions " << step.freezePositions << nl;
     logInterval = label(readBounded(d, "logInterval", 1, 1, labelMax));
+    // Loops over fewer points or nodes run on one OpenMP thread: a parallel
+    // region costs a scheduler time slice when cores are shared (MPI ranks
+    // plus threads). Lower it to thread small cases (tests do).
+    mpm::MpmSystem::parallelThreshold =
+        mpm::Index(readBounded(d, "threadMinLoopSize", 50000, 1, labelMax));
 
     const dictionary& ts = d.subOrEmptyDict("timeStep");
     const word type(ts.getOrDefault<word>("type", "adaptive"));

@@ -5,6 +5,7 @@
 #include "clockTime.H"
 #include "floatingPointTraps.H"
 #include <omp.h>
+#include <cstring>
 
 Foam::mpmModel::mpmModel(const fvMesh& mesh)
 :
@@ -112,11 +113,33 @@ std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
 void Foam::mpmModel::reportBalance(Ostream& os) const
 {
     if (!Pstream::parRun()) return;
-    const label n = label(system_.particles().size());
+    const mpm::Particles& P = system_.particles();
+    const label n = label(P.size());
     const label total = returnReduce(n, sumOp<label>());
+    // Exact whatever the distribution of the points, so migration can be
+    // checked step by step: the sum of the ids and a checksum of the mass
+    // bit patterns (sum mod 2^61 - 1, combined in rank order).
+    const std::uint64_t prime = (std::uint64_t(1) << 61) - 1;
+    std::uint64_t massSum = 0;
+    std::int64_t idSum = 0;
+    for (label p = 0; p < n; ++p)
+    {
+        std::uint64_t bits;
+        std::memcpy(&bits, &P.mass[p], sizeof bits);
+        massSum = (massSum + bits % prime) % prime;
+        idSum += P.id[p];
+    }
+    std::vector<std::int64_t> all;
+    comm_.allGather({std::int64_t(massSum)}, all);
+    massSum = 0;
+    for (const std::int64_t s : all) massSum = (massSum + std::uint64_t(s)) % prime;
+    idSum = comm_.sum(idSum);
     os  << "MPM: points per processor min " << returnReduce(n, minOp<label>())
         << ", mean " << scalar(total)/Pstream::nProcs() << ", max "
-        << returnReduce(n, maxOp<label>()) << nl;
+        << returnReduce(n, maxOp<label>()) << "; total " << total
+        << ", id sum " << idSum << ", mass checksum " << massSum
+        << "; migrated " << returnReduce(label(system_.migratedCount()), sumOp<label>())
+        << nl;
 }
 
 void Foam::mpmModel::warnIfAboveCourantLimit(scalar dt, const char* source) const
