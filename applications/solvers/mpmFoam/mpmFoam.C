@@ -19,82 +19,13 @@ Description
     drag, buoyancy and the fluid fraction (mpmProperties::coupling); the
     solids sub-cycle within each fluid step. Without a fluid no fluid
     equation is constructed or solved.
+
+    The time loop is the solver module mpmFoam (src/mpmFoam/solverModule,
+    the same as `foamRun -solver mpmFoam`) run by runSolverModule.
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "mpmModel.H"
-#include "fluidPhase.H"
-#include "fluidCoupling.H"
-#include "pimpleControl.H"
-#include "clockTime.H"
-
-namespace Foam
-{
-
-void pureMpm(Time& runTime, mpmModel& mpm)
-{
-    while (runTime.run())
-    {
-        const scalar dt = mpm.deltaT();
-        runTime.setDeltaT(dt);   // adjusted to land on write times
-        ++runTime;
-
-        const scalar dtUsed = runTime.deltaTValue();
-        const bool log = mpm.logThisStep();
-        if (log)
-        {
-            Info<< "Courant Number max: " << mpm.courantNumber(dtUsed)
-                << " deltaT = " << dtUsed << nl
-                << "Time = " << runTime.timeName() << nl << endl;
-        }
-
-        mpm.evolve(dtUsed);
-        mpm.write();
-        runTime.write();
-
-        if (log || runTime.writeTime())
-        {
-            mpm.report(Info);
-            runTime.printExecutionTime(Info);
-        }
-    }
-    mpm.summary(Info);
-}
-
-void coupled(Time& runTime, fvMesh& mesh, mpmModel& mpm)
-{
-    pimpleControl pimple(mesh);
-    fluidPhase fluid(mesh, pimple);
-    fluidCoupling coupling(mesh, mpm, fluid);
-    scalar fluidTime = 0;
-
-    while (runTime.run())
-    {
-        ++runTime;
-        const scalar dt = runTime.deltaTValue();
-        Info<< "Time = " << runTime.timeName() << nl << endl;
-
-        coupling.advanceSolids(dt);
-        Info<< "MPM: " << coupling.lastSubCycles() << " sub-cycles of deltaT = "
-            << dt/coupling.lastSubCycles() << ", Courant Number max "
-            << mpm.courantNumber(dt/coupling.lastSubCycles()) << nl;
-
-        const clockTime timer;
-        fluid.solve(pimple, coupling.g());
-        fluidTime += timer.elapsedTime();
-        Info<< "fluid: continuity error " << fluid.continuityError()
-            << ", min alpha.fluid " << gMin(fluid.alpha().primitiveField())
-            << ", alpha transport error " << fluid.alphaTransportError() << nl;
-
-        mpm.write();
-        runTime.write();
-        mpm.report(Info);
-        runTime.printExecutionTime(Info);
-    }
-    mpm.summary(Info, fluidTime);
-}
-
-} // End namespace Foam
+#include "mpmFoamModule.H"
 
 int main(int argc, char *argv[])
 {
@@ -107,19 +38,10 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    mpmModel mpm(mesh);
-    mpm.report(Info);   // state at the start time
-
-    Info<< "\nStarting time loop\n" << endl;
-
-    if (fluidPhase::present(mesh))
-    {
-        coupled(runTime, mesh, mpm);
-    }
-    else
-    {
-        pureMpm(runTime, mpm);
-    }
+    // Constructed directly (no selection): this application links
+    // libmpmFoam, and its log stays that of mpmFoam
+    mpmFoamModule module(mesh);
+    runSolverModule(runTime, module);
 
     Info<< "End\n" << endl;
     return 0;
