@@ -69,6 +69,7 @@ void Boundary::build
 )
 {
     ghosts_.clear();
+    periodicCopies_.clear();
     friction_.clear();
     periodic_ = periodicAxes(L, spec);
     const bool decomposed = bool(ownsCell);
@@ -77,9 +78,28 @@ void Boundary::build
     for (int j = 0; j < B.nodes[1]; ++j)
     for (int i = 0; i < B.nodes[0]; ++i)
     {
-        // Global real indices; reflect each out-of-range solved coordinate in turn.
+        // Global real indices
         int r[3] = {i - B.padOf(0) + offset[0], j - B.padOf(1) + offset[1], k - B.padOf(2) + offset[2]};
-        bool isGhost = false, skip = false;
+        bool wrapped = false;
+        int c[3] = {r[0], r[1], r[2]};
+        for (int a = 0; a < 3; ++a)
+        {
+            const int n = L.nCells[a];
+            if (!L.solved[a] || !periodic_[a] || (r[a] >= 0 && r[a] < n)) continue;
+            c[a] = ((r[a] % n) + n) % n;
+            wrapped = true;
+        }
+        if (wrapped)
+        {
+            // A periodic copy: the halo's (serial: ours, as a pair).
+            if (!decomposed)
+            {
+                periodicCopies_.emplace_back(B.node(i, j, k), B.node(c[0] + B.padOf(0), c[1] + B.padOf(1), c[2] + B.padOf(2)));
+            }
+            continue;
+        }
+        // A wall ghost: reflect each out-of-range solved coordinate in turn.
+        bool isGhost = false;
         std::array<Real, 3> sign{1, 1, 1};
         int reflections = 0, unilateralAxis = -1;
         Real outward = 0;
@@ -87,29 +107,21 @@ void Boundary::build
         {
             const int n = L.nCells[a];
             if (!L.solved[a] || (r[a] >= 0 && r[a] < n)) continue;
-            if (decomposed && periodic_[a]) { skip = true; break; }
             isGhost = true;
             const bool low = r[a] < 0;
             // The face this ghost lies across: other coordinates clamped.
-            int c[3] = {r[0], r[1], r[2]};
+            int f[3] = {r[0], r[1], r[2]};
             for (int b = 0; b < 3; ++b)
             {
-                c[b] = c[b] < 0 ? 0 : (c[b] >= L.nCells[b] ? L.nCells[b] - 1 : c[b]);
+                f[b] = f[b] < 0 ? 0 : (f[b] >= L.nCells[b] ? L.nCells[b] - 1 : f[b]);
             }
-            const auto& wc = spec.conditions.at(spec.conditionAt(L, 2*a + (low ? 0 : 1), c[0], c[1], c[2]));
-            if (wc.type == WallType::periodic)
-            {
-                r[a] = ((r[a] % n) + n) % n;
-            }
-            else
-            {
-                r[a] = low ? -1 - r[a] : 2*n - 1 - r[a];
-                ++reflections;
-                if (wc.type == WallType::noSlip) { for (auto& s : sign) s = -s; }
-                else { sign[a] = -sign[a]; unilateralAxis = a; outward = low ? -1 : 1; }
-            }
+            const auto& wc = spec.conditions.at(spec.conditionAt(L, 2*a + (low ? 0 : 1), f[0], f[1], f[2]));
+            r[a] = low ? -1 - r[a] : 2*n - 1 - r[a];
+            ++reflections;
+            if (wc.type == WallType::noSlip) { for (auto& s : sign) s = -s; }
+            else { sign[a] = -sign[a]; unilateralAxis = a; outward = low ? -1 : 1; }
         }
-        if (skip || !isGhost) continue;
+        if (!isGhost) continue;
         if (decomposed && !ownsCell(L.cellIndex(r[0], r[1], r[2]))) continue;
         // Corner ghosts (two or more reflections) stay bilateral.
         if (reflections != 1) unilateralAxis = -1;

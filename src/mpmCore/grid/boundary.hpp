@@ -21,6 +21,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm {
@@ -70,10 +71,10 @@ public:
     void build(const Lattice& L, const BoundarySpec& spec);
 
     // A decomposed rank: `local` is its box lattice, whose real node 0 is
-    // the global real node `offset`. Ghosts are listed only where this rank
-    // folds them: canonical ones (periodic copies are the halo's) whose
-    // image cell it owns (ownsCell(global cell index)); friction nodes only
-    // on owned cells. The node indices are the box lattice's.
+    // the global real node `offset`. Wall ghosts are listed only where this
+    // rank folds them (their image cell is owned: ownsCell(global cell
+    // index)), friction nodes only on owned cells, and no periodic copies.
+    // The node indices are the box lattice's.
     void build
     (
         const Lattice& global, const BoundarySpec& spec, const Lattice& local,
@@ -83,7 +84,16 @@ public:
     // Periodic axes of a spec (both sides of an axis must agree).
     static std::array<bool, 3> periodicAxes(const Lattice& L, const BoundarySpec& spec);
 
+    // Wall (mirror) ghosts: folded onto their images with reflection signs.
     const std::vector<Ghost>& ghosts() const { return ghosts_; }
+
+    // Serial runs: ghosts across a periodic direction, as (copy, canonical
+    // node) pairs; the canonical node has its periodic coordinates wrapped
+    // and may itself be a wall ghost (a corner). They are the serial halo:
+    // summed into the canonical node right after P2G, before any wall
+    // decision sees the node, and copied back before G2P. Decomposed runs
+    // leave them to the Subdomain's halo, which does the same across ranks.
+    const std::vector<std::pair<Index, Index>>& periodicCopies() const { return periodicCopies_; }
     const std::vector<FrictionNode>& frictionNodes() const { return friction_; }
 
     // Whether the side is periodic (for wrapping positions).
@@ -91,6 +101,7 @@ public:
 
 private:
     std::vector<Ghost> ghosts_;
+    std::vector<std::pair<Index, Index>> periodicCopies_;
     std::vector<FrictionNode> friction_;
     std::array<bool, 3> periodic_{false, false, false};
 };

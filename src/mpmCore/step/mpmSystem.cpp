@@ -316,7 +316,6 @@ void MpmSystem::addGravity(bool ownerSideOnly)
 
 void MpmSystem::sumHalo(unsigned what)
 {
-    if (!subdomain_) return;
     auto& g = grid_;
     std::vector<Real*> a;
     if (what & foldMass) { a.push_back(g.mass.data()); a.push_back(g.volume.data()); }
@@ -330,16 +329,27 @@ void MpmSystem::sumHalo(unsigned what)
 
 void MpmSystem::sumHalo(const std::vector<Real*>& arrays)
 {
-    if (!subdomain_) return;
-    ScopedTimer t(timers_.halo);
-    subdomain_->sum(arrays);
+    if (subdomain_)
+    {
+        ScopedTimer t(timers_.halo);
+        subdomain_->sum(arrays);
+        return;
+    }
+    // Serial: the periodic copies are the halo.
+    const auto& pc = boundary_.periodicCopies();
+    for (Real* a : arrays) for (const auto& c : pc) a[c.second] += a[c.first];
 }
 
 void MpmSystem::copyHalo(const std::vector<Real*>& arrays) const
 {
-    if (!subdomain_) return;
-    ScopedTimer t(timers_.halo);
-    subdomain_->copy(arrays);
+    if (subdomain_)
+    {
+        ScopedTimer t(timers_.halo);
+        subdomain_->copy(arrays);
+        return;
+    }
+    const auto& pc = boundary_.periodicCopies();
+    for (Real* a : arrays) for (const auto& c : pc) a[c.first] = a[c.second];
 }
 
 void MpmSystem::foldGhosts(unsigned what)

@@ -156,9 +156,10 @@ private:
     template<class Fn> void forEachPointColoured(Fn&& fn) const;
 
     enum FoldWhat : unsigned { foldMass = 1, foldMomentum = 2, foldForce = 4 };
-    // Decomposed runs: adds every halo copy of the chosen arrays into its
-    // owner (after P2G, before the ghost fold), or sends the owners' values
-    // back to the copies (after the fill, before G2P). No-ops in serial.
+    // Adds every halo copy of the chosen arrays into its owner (after P2G,
+    // before the wall fold and contact decision), or sends the owners'
+    // values back to the copies (after the fill, before G2P). Decomposed:
+    // the Subdomain's halo across ranks; serial: the periodic copies.
     void sumHalo(unsigned what);
     void sumHalo(const std::vector<Real*>& arrays);
     void copyHalo(const std::vector<Real*>& arrays) const;

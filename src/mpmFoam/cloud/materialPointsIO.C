@@ -39,25 +39,25 @@ struct Writer
     {
         IOField<scalar> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) f[i] = a[i];
-        f.write();
+        f.write(n > 0);
     }
     void vectorField(const char* name, const std::array<std::vector<mpm::Real>, 3>& a) const
     {
         IOField<vector> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) f[i] = vector(a[0][i], a[1][i], a[2][i]);
-        f.write();
+        f.write(n > 0);
     }
     void symmTensorField(const char* name, const std::array<std::vector<mpm::Real>, 6>& a) const
     {
         IOField<symmTensor> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) for (int c = 0; c < 6; ++c) f[i][c] = a[symmToCore[c]][i];
-        f.write();
+        f.write(n > 0);
     }
     void tensorField(const char* name, const std::array<std::vector<mpm::Real>, 9>& a) const
     {
         IOField<tensor> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) for (int c = 0; c < 9; ++c) f[i][c] = a[c][i];
-        f.write();
+        f.write(n > 0);
     }
 };
 
@@ -120,8 +120,11 @@ void Foam::writeMaterialPoints
 {
     passiveParticleCloud cloud(mesh, materialPointsCloudName, IDLList<passiveParticle>());
     const label n = points.size();
-    // A decomposed rank without points writes no cloud (as decomposePar)
-    if (n == 0) return;
+    // Locating particles builds the mesh's tet decomposition, and the cloud
+    // writes its uniform properties, both collectively: every rank takes
+    // part, with or without points. A rank without points writes no files
+    // (as decomposePar), through write(valid = false).
+    (void)mesh.tetBasePtIs();
     for (label p = 0; p < n; ++p)
     {
         const point x(points.x[0][p], points.x[1][p], points.x[2][p]);
@@ -143,17 +146,18 @@ void Foam::writeMaterialPoints
 
     IOField<scalar> J(cloud.fieldIOobject("J", IOobject::NO_READ), n);
     forAll(J, i) J[i] = points.J(i);
-    J.write();
+    J.write(n > 0);
     IOField<label> mat(cloud.fieldIOobject("material", IOobject::NO_READ), n);
     forAll(mat, i) mat[i] = points.material[i];
-    mat.write();
+    mat.write(n > 0);
     IOField<label> id(cloud.fieldIOobject("pointId", IOobject::NO_READ), n);
     forAll(id, i) id[i] = label(points.id[i]);
-    id.write();
+    id.write(n > 0);
 }
 
 void Foam::readMaterialPoints(const fvMesh& mesh, mpm::Particles& points)
 {
+    (void)mesh.tetBasePtIs();     // collective: before any rank needs it
     passiveParticleCloud cloud(mesh, materialPointsCloudName);
     const label n = cloud.size();
     if (returnReduce(n, sumOp<label>()) == 0)

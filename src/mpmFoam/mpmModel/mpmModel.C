@@ -137,7 +137,8 @@ void Foam::mpmModel::reportBalance(Ostream& os) const
     os  << "MPM: points per processor min " << returnReduce(n, minOp<label>())
         << ", mean " << scalar(total)/Pstream::nProcs() << ", max "
         << returnReduce(n, maxOp<label>()) << "; total " << total
-        << ", id sum " << idSum << ", mass checksum " << massSum
+        << ", id sum " << std::to_string(idSum).c_str()
+        << ", mass checksum " << std::to_string(massSum).c_str()
         << "; migrated " << returnReduce(label(system_.migratedCount()), sumOp<label>())
         << nl;
 }
