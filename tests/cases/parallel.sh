@@ -17,6 +17,7 @@
 #   - a restart from a decomposed time reproduces the uninterrupted run;
 #   - mpmSetParticles -parallel seeds the points decomposePar gives;
 #   - MPI+OpenMP (2 ranks x 2 threads) equals 2 ranks x 1 thread bitwise;
+#   - mpirun -np 4 foamRun -solver mpmFoam -parallel equals mpmFoam bitwise;
 #   - a case decomposed for 3 run on 2 ranks stops with a clear message.
 # Bitwise equality with serial is not expected: the halo sums a node's
 # contributions in another order (round-off, ~1e-15).
@@ -199,6 +200,16 @@ out=$(compare "$single" "$hybrid" "$tEnd" --fields U stress F)
 worst=$(echo "$out" | awk 'NR>2{if($2>m)m=$2}END{print m+0}')
 check "MPI+OpenMP (2 ranks x 2 threads) equals 2 ranks x 1 thread bitwise" "worst == 0" worst="${worst:-1}"
 parity "hybrid 2x2 vs serial" "$serial" "$hybrid" "$tEnd"
+
+# foamRun: the same decomposed run through the solver-module driver
+viaFoamRun="$SCRATCH/block3D.foamRun4"
+prepare block3D "$viaFoamRun"
+decompose "$viaFoamRun" 4 scotch
+(cd "$viaFoamRun" && mpirun -np 4 foamRun -solver mpmFoam -parallel > log.foamRun 2>&1) \
+    || { echo "FAIL: mpirun -np 4 foamRun -solver mpmFoam -parallel"; tail -20 "$viaFoamRun/log.foamRun"; failures=$((failures + 1)); }
+out=$(compare "$SCRATCH/block3D.scotch4" "$viaFoamRun" "$tEnd" --fields U stress F)
+worst=$(echo "$out" | awk 'NR>2{if($2>m)m=$2}END{print m+0}')
+check "mpirun -np 4 foamRun -solver mpmFoam -parallel equals mpmFoam -parallel bitwise" "worst == 0" worst="${worst:-1}"
 
 wrongN="$SCRATCH/block3D.wrongN"
 prepare block3D "$wrongN"
