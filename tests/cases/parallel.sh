@@ -222,4 +222,15 @@ expectFailure "a case decomposed for 3 processors, its dictionary edited to 2, r
     "incorrect number of processors" \
     bash -c "cd '$wrongN' && mpirun -np 2 mpmFoam -parallel"
 
+# A step far above the Courant limit moves points beyond their halo: a
+# clear stop, not lost points
+tooFar="$SCRATCH/block3D.tooFar"
+cp -r "$SCRATCH/block3D.scotch2" "$tooFar"
+rm -rf "$tooFar"/processor*/[1-9]* "$tooFar"/processor*/0.[0-9]*
+sed -i 's/timeStep { type adaptive; courant 0.4; }/timeStep { type fixed; }/' "$tooFar/constant/mpmProperties"
+sed -i 's/deltaT 1e-3;/deltaT 0.2;/' "$tooFar/system/controlDict"
+expectFailure "a fixed step moving points 4 cells in one step, decomposed" \
+    "material point id [0-9]+ moved beyond its processor's halo in one step" \
+    bash -c "cd '$tooFar' && mpirun -np 2 mpmFoam -parallel"
+
 [ "$failures" -eq 0 ]

@@ -295,6 +295,16 @@ void Subdomain::build
             ownerIdx_[s][k] = l;
         }
     }
+    neighbours_.clear();
+    isNeighbour_.assign(np, 0);
+    for (int q = 0; q < np; ++q)
+    {
+        if (q != me && (!copyIdx_[q].empty() || !ownerIdx_[q].empty()))
+        {
+            neighbours_.push_back(q);
+            isNeighbour_[q] = 1;
+        }
+    }
     sendBuf_.assign(np, {});
     recvBuf_.assign(np, {});
 }
@@ -353,11 +363,5 @@ Index Subdomain::haloNodes() const
     return n;
 }
 
-int Subdomain::neighbourCount() const
-{
-    int n = 0;
-    for (std::size_t q = 0; q < copyIdx_.size(); ++q) n += !copyIdx_[q].empty() || !ownerIdx_[q].empty();
-    return n;
-}
 
 } // namespace mpm

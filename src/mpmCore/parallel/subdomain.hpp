@@ -69,7 +69,13 @@ public:
     // Values sent per sum() or copy() per array, summed over ranks'
     // messages from here (for the cost log and the docs' estimate).
     Index haloNodes() const;
-    int neighbourCount() const;
+    int neighbourCount() const { return int(neighbours_.size()); }
+
+    // Ranks sharing halo nodes with this one (a symmetric relation): the
+    // only ranks a point can migrate to in one step, so migration talks to
+    // them alone, with no all-to-all.
+    const std::vector<int>& neighbours() const { return neighbours_; }
+    bool isNeighbour(int rank) const { return rank >= 0 && isNeighbour_[rank]; }
 
 private:
     Index globalCellId(const int r[3]) const;
@@ -89,6 +95,8 @@ private:
     // to recvIdx on rank r at the same k), and owners here <- copies there.
     std::vector<std::vector<Index>> copyIdx_, ownerIdx_;
     std::vector<std::pair<Index, Index>> selfPairs_;   // (copy, owner) here
+    std::vector<int> neighbours_;
+    std::vector<char> isNeighbour_;
 
     mutable std::vector<std::vector<char>> sendBuf_, recvBuf_;
 };

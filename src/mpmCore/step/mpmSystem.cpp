@@ -778,7 +778,9 @@ Index MpmSystem::migrate()
     {
         const Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
         dest[p] = sd.ownerOf(x);
-        if (dest[p] < 0) lost = std::min<std::int64_t>(lost, P.id[p]);
+        // One step moves a point to a cell its stencil reached: its owner
+        // shares halo nodes with this rank.
+        if (dest[p] != me && !sd.isNeighbour(dest[p])) lost = std::min<std::int64_t>(lost, P.id[p]);
         sent += dest[p] != me;
     }
     lost = comm.min(lost);
@@ -797,7 +799,24 @@ Index MpmSystem::migrate()
         keep[p] = dest[p] == me;
         if (!keep[p]) P.pack(p, send[dest[p]]);
     }
-    comm.exchange(send, recv, false);
+    // Sizes to and from the halo neighbours only, then the points: no
+    // all-to-all, whatever the number of ranks.
+    std::vector<std::vector<char>> sizeOut(np), sizeIn(np);
+    for (const int q : sd.neighbours())
+    {
+        const std::int64_t bytes = std::int64_t(send[q].size());
+        appendBytes(sizeOut[q], &bytes, 1);
+        sizeIn[q].resize(sizeof(std::int64_t));
+    }
+    comm.exchange(sizeOut, sizeIn, true);
+    for (const int q : sd.neighbours())
+    {
+        std::int64_t bytes;
+        std::size_t at = 0;
+        readBytes(sizeIn[q], at, &bytes, 1);
+        recv[q].resize(std::size_t(bytes));
+    }
+    comm.exchange(send, recv, true);
     if (sent) P.keepOnly(keep);
     for (int q = 0; q < np; ++q) P.unpack(recv[q]);
     migrated_ += sent;

@@ -1,0 +1,147 @@
+#!/usr/bin/env python3
+"""Strong scaling of decomposed mpmFoam runs on this machine.
+
+Two scenes, each run on 1 rank, 2 ranks (pure MPI), 1 rank x 2 OpenMP
+threads, 2 ranks x 2 threads, and 3 and 4 ranks (oversubscribed on a
+2-core machine: reported as what they are):
+  block3D  a 3D elastic block thrown across a 32^3 box (about 190 000
+           points, cubic B-splines, 40 fixed steps, no writes);
+  coupled  the underwater granular column collapse tutorial (3200 points in
+           water, 60 x 40 cells), 60 fluid steps with 9 MPM sub-cycles.
+Times are the step loop's own (the cost summary each run prints: every
+phase's maximum over ranks; start-up and writing excluded), so ratios are
+taken within one run of this script on one machine. Prints a table and
+the share of each step spent in halo exchange and in migration.
+
+    benchmarks/parallelScaling/run.sh [--scenes block3D coupled] [--keep]
+"""
+import argparse
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+CONFIGS = [  # (ranks, threads)
+    (1, 1), (2, 1), (1, 2), (2, 2), (3, 1), (4, 1)]
+
+
+def sh(cmd, cwd, env=None):
+    r = subprocess.run(cmd, cwd=cwd, shell=True, env=env, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    if r.returncode != 0:
+        sys.stderr.write(r.stdout[-3000:])
+        raise SystemExit("failed: %s (in %s)" % (cmd, cwd))
+    return r.stdout
+
+
+def make_block3D(d):
+    shutil.copytree(os.path.join(ROOT, "tests/cases/parallelCases/block3D"), d)
+    sub = [("system/blockMeshDict", r"\(14 14 14\)", "(32 32 32)"),
+           ("system/mpmSetParticlesDict", r"min \([^)]*\); max \([^)]*\);",
+            "min (0.1 0.1 0.1); max (0.7 0.7 0.7);"),
+           ("system/mpmSetParticlesDict", r"pointsPerCell 2", "pointsPerCell 3"),
+           ("system/controlDict", r"endTime 0.8;", "endTime 0.06;"),
+           ("system/controlDict", r"deltaT 1e-3;", "deltaT 1.5e-3;"),
+           ("system/controlDict", r"writeControl adjustableRunTime; writeInterval 0.4;",
+            "writeControl timeStep; writeInterval 100000;"),
+           ("constant/mpmProperties", r"timeStep \{[^}]*\}", "timeStep { type fixed; }"),
+           ("constant/mpmProperties", r"logInterval +1;", "logInterval 10;")]
+    for f, a, b in sub:
+        p = os.path.join(d, f)
+        s = open(p).read()
+        s2 = re.sub(a, b, s)
+        assert s2 != s, (f, a)
+        open(p, "w").write(s2)
+    sh("blockMesh && mpmSetParticles", d)
+
+
+def make_coupled(d):
+    shutil.copytree(os.path.join(ROOT, "tutorials/multiphase/underwaterGranularCollapse"), d,
+                    ignore=shutil.ignore_patterns("[1-9]*", "0.*", "processor*", "log.*", "*.png"))
+    p = os.path.join(d, "system/controlDict")
+    s = open(p).read()
+    s = re.sub(r"\nendTime .*", "\nendTime 0.06;", s)
+    s = re.sub(r"\nwriteControl .*", "\nwriteControl timeStep;", s)
+    s = re.sub(r"\nwriteInterval .*", "\nwriteInterval 100000;", s)
+    open(p, "w").write(s)
+    sh("blockMesh && mpmSetParticles", d)
+
+
+def decompose(d, n):
+    with open(os.path.join(d, "system/decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains %d;\nmethod scotch;\n" % n)
+    sh("rm -rf processor* && decomposePar -force", d)
+
+
+def summary(log):
+    """Phase times (s) of the cost summary, and the point-steps."""
+    t = {}
+    for name, key in [("P2G", "p2g"), ("nodal update", "nodal"), ("G2P", "g2p"),
+                      ("constitutive", "constitutive"), ("of which halo", "halo"),
+                      ("migration", "migration"), ("fluid \\(PIMPLE\\)", "fluid")]:
+        m = re.search(r"^\s+" + name + r"\s+([0-9.eE+-]+) s", log, re.M)
+        t[key] = float(m.group(1)) if m else 0.0
+    m = re.search(r"MPM summary: (\d+) material points, (\d+) steps", log)
+    t["points"], t["steps"] = int(m.group(1)), int(m.group(2))
+    t["loop"] = sum(t[k] for k in ("p2g", "nodal", "g2p", "constitutive", "migration", "fluid"))
+    return t
+
+
+def run_scene(name, base, cores):
+    rows = []
+    for ranks, threads in CONFIGS:
+        d = base + ".%dx%d" % (ranks, threads)
+        shutil.copytree(base, d)
+        env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+        if ranks == 1:
+            log = sh("mpmFoam", d, env)
+        else:
+            decompose(d, ranks)
+            log = sh("mpirun -np %d mpmFoam -parallel" % ranks, d, env)
+        rows.append((ranks, threads, summary(log)))
+    t1 = rows[0][2]["loop"]
+    print("\n%s: %d points, %d MPM steps" % (name, rows[0][2]["points"], rows[0][2]["steps"]))
+    print("%-6s %-7s %-10s %-8s %-10s %-8s %-9s %s" % (
+        "ranks", "threads", "loop [s]", "speedup", "efficiency", "halo %", "migr. %", "note"))
+    for ranks, threads, t in rows:
+        used = ranks*threads
+        note = "oversubscribed (%d processes on %d cores)" % (used, cores) if used > cores else ""
+        print("%-6d %-7d %-10.3f %-8.2f %-10.2f %-8.1f %-9.1f %s" % (
+            ranks, threads, t["loop"], t1/t["loop"], t1/t["loop"]/min(used, cores),
+            100*t["halo"]/t["loop"], 100*t["migration"]/t["loop"], note))
+    return rows
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--scenes", nargs="*", default=["block3D", "coupled"])
+    ap.add_argument("--keep", action="store_true")
+    args = ap.parse_args()
+    cores = os.cpu_count()
+    cpu = ""
+    try:
+        cpu = [l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")][0]
+    except Exception:
+        pass
+    print("machine: %s, %d cores, %s" % (cpu, cores, platform.platform()))
+    work = tempfile.mkdtemp(prefix="parallelScaling.")
+    try:
+        for scene in args.scenes:
+            base = os.path.join(work, scene)
+            {"block3D": make_block3D, "coupled": make_coupled}[scene](base)
+            run_scene(scene, base, cores)
+    finally:
+        if args.keep:
+            print("\ncases kept in", work)
+        else:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
