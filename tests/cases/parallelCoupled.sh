@@ -33,17 +33,6 @@ setup()
         || { echo "FAIL: set-up"; failures=$((failures + 1)); }
 }
 
-decompose()
-{
-    cat > "$1/system/decomposeParDict" <<DEOF
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains $2;
-method $3;
-coeffs { ${4:-} }
-DEOF
-    (cd "$1" && decomposePar -force > log.decomposePar 2>&1) || { echo "FAIL: decomposePar"; failures=$((failures + 1)); }
-}
-
 # worst <a> <b>: largest relative difference over points and fluid fields
 worst()
 {
@@ -72,32 +61,18 @@ export OMP_NUM_THREADS=1
 serial="$SCRATCH/serial"
 setup "$serial" tight
 (cd "$serial" && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: serial run"; failures=$((failures + 1)); }
-read -r count idSum checksum <<< "$("$PY" - "$serial" <<'PYEOF'
-import struct, sys
-import mpmPost
-m = mpmPost.read_cloud_field(sys.argv[1], "0", "mass").reshape(-1)
-ids = mpmPost.read_cloud_field(sys.argv[1], "0", "pointId").reshape(-1)
-p = (1 << 61) - 1
-h = 0
-for x in m:
-    h = (h + struct.unpack("<Q", struct.pack("<d", float(x)))[0] % p) % p
-print(len(m), int(ids.astype("int64").sum()), h)
-PYEOF
-)"
+read -r count idSum checksum <<< "$(cloudTotals "$serial")"
 
 for run in "scotch 3 mpmFoam" "simple 2 foamRun n (2 1 1);"; do
     read -r method n app coeffs <<< "$run"
     par="$SCRATCH/$method$n"
     setup "$par" tight
-    decompose "$par" "$n" "$method" "$coeffs"
+    decomposeCase "$par" "$n" "$method" "$coeffs"
     if [ "$app" = foamRun ]; then cmd="foamRun -solver mpmFoam -parallel"; else cmd="mpmFoam -parallel"; fi
     (cd "$par" && mpirun -np "$n" $cmd > log.run 2>&1) || { echo "FAIL: mpirun -np $n $cmd"; tail -20 "$par/log.run"; failures=$((failures + 1)); }
     w=$(worst "$serial" "$par")
     check "coupled $method $n ($app): points within 1e-9 of serial" "w <= 1e-9" w="$w"
-    lines=$(grep -c "^MPM: points per processor" "$par/log.run")
-    bad=$(grep "^MPM: points per processor" "$par/log.run" | grep -vc "total $count, id sum $idSum, mass checksum $checksum;")
-    check "coupled $method $n: count, id sum and mass checksum exact on every fluid step" \
-        "lines >= 50 and bad == 0" lines="$lines" bad="$bad"
+    checkConservation "coupled $method $n" "$par/log.run" "$count" "$idSum" "$checksum" 50
     (cd "$par" && reconstructPar -latestTime > log.reconstructPar 2>&1) || { echo "FAIL: reconstructPar"; failures=$((failures + 1)); }
     f=$(fluidDiff "$serial" "$par")
     check "coupled $method $n: fluid U, p and alpha.solid (reconstructPar) within 1e-9 of serial" "f <= 1e-9" f="${f:-1}"
@@ -108,7 +83,7 @@ tight=$w
 looseS="$SCRATCH/looseSerial"; looseP="$SCRATCH/looseParallel"
 setup "$looseS" loose; setup "$looseP" loose
 (cd "$looseS" && mpmFoam > log.mpmFoam 2>&1)
-decompose "$looseP" 2 simple "n (2 1 1);"
+decomposeCase "$looseP" 2 simple "n (2 1 1);"
 (cd "$looseP" && mpirun -np 2 mpmFoam -parallel > log.run 2>&1) || { echo "FAIL: loose parallel run"; failures=$((failures + 1)); }
 loose=$(worst "$looseS" "$looseP")
 check "the serial/parallel difference follows the pressure solver's tolerance (loose $loose, tight $tight)" \
