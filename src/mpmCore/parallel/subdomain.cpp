@@ -57,7 +57,12 @@ int Subdomain::ownerOf(const Real* x) const
         const Index c = Index(std::floor((x[a] - global_.origin[a])/global_.h));
         r[a] = int(std::min<Index>(std::max<Index>(c, 0), global_.nCells[a] - 1));
     }
-    return ownerOfCell(globalCellId(r));
+    // Called for every point every step: the box first, the map (periodic
+    // images beyond the box) only when that fails.
+    const Index l = localNode(r[0], r[1], r[2]);
+    if (l >= 0 && boxOwner_[l] >= 0) return boxOwner_[l];
+    const auto it = owner_.find(globalCellId(r));
+    return it == owner_.end() ? -1 : it->second;
 }
 
 void Subdomain::build

@@ -84,12 +84,18 @@ void Particles::unpack(const std::vector<char>& buf)
     }
 }
 
-void Particles::keepOnly(const std::vector<char>& keep)
+void Particles::remove(const std::vector<Index>& ascending)
 {
-    std::vector<Index> order;
-    for (Index p = 0; p < size(); ++p) if (keep[p]) order.push_back(p);
-    permute(order);
-    resize(Index(order.size()));
+    Index n = size();
+    for (auto it = ascending.rbegin(); it != ascending.rend(); ++it)
+    {
+        const Index p = *it, last = --n;
+        if (p == last) continue;
+        forEachArray(*this, [&](std::vector<Real>& a) { a[p] = a[last]; });
+        material[p] = material[last];
+        id[p] = id[last];
+    }
+    resize(n);
 }
 
 Real Particles::J(Index p) const

@@ -36,11 +36,12 @@ struct Particles
     void permute(const std::vector<Index>& order);
 
     // Migration between ranks: appends point p (every field) to a byte
-    // buffer; appends every point of such a buffer; keeps the points with
-    // keep[p] != 0, in order.
+    // buffer; appends every point of such a buffer; removes the points at
+    // the given indices (ascending), filling each hole with the last point
+    // (O(removed), not O(points): a few points leave per step).
     void pack(Index p, std::vector<char>& buf) const;
     void unpack(const std::vector<char>& buf);
-    void keepOnly(const std::vector<char>& keep);
+    void remove(const std::vector<Index>& ascending);
 
     Real J(Index p) const;
 };

@@ -774,6 +774,7 @@ Index MpmSystem::migrate()
     const std::int64_t none = std::numeric_limits<std::int64_t>::max();
     std::int64_t lost = none;
     Index sent = 0;
+    #pragma omp parallel for reduction(min:lost) reduction(+:sent) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         const Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
@@ -793,11 +794,13 @@ Index MpmSystem::migrate()
         throw std::runtime_error(os.str());
     }
     std::vector<std::vector<char>> send(np), recv(np);
-    std::vector<char> keep(n);
+    std::vector<Index> leaving;
+    leaving.reserve(sent);
     for (Index p = 0; p < n; ++p)
     {
-        keep[p] = dest[p] == me;
-        if (!keep[p]) P.pack(p, send[dest[p]]);
+        if (dest[p] == me) continue;
+        P.pack(p, send[dest[p]]);
+        leaving.push_back(p);
     }
     // Sizes to and from the halo neighbours only, then the points: no
     // all-to-all, whatever the number of ranks.
@@ -817,7 +820,7 @@ Index MpmSystem::migrate()
         recv[q].resize(std::size_t(bytes));
     }
     comm.exchange(send, recv, true);
-    if (sent) P.keepOnly(keep);
+    P.remove(leaving);
     for (int q = 0; q < np; ++q) P.unpack(recv[q]);
     migrated_ += sent;
     return sent;
