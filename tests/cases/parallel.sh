@@ -18,7 +18,8 @@
 #   - mpmSetParticles -parallel seeds the points decomposePar gives;
 #   - MPI+OpenMP (2 ranks x 2 threads) equals 2 ranks x 1 thread bitwise;
 #   - mpirun -np 4 foamRun -solver mpmFoam -parallel equals mpmFoam bitwise;
-#   - a case decomposed for 3 run on 2 ranks stops with a clear message.
+#   - a case decomposed for 3 run on 2 ranks, a processor without cells and
+#     a step moving points beyond the halo stop with clear messages.
 # Bitwise equality with serial is not expected: the halo sums a node's
 # contributions in another order (round-off, ~1e-15).
 #------------------------------------------------------------------------------
@@ -188,6 +189,23 @@ foamDictionary -entry numberOfSubdomains -set 2 "$wrongN/system/decomposeParDict
 expectFailure "a case decomposed for 3 processors, its dictionary edited to 2, run on 2" \
     "incorrect number of processors" \
     bash -c "cd '$wrongN' && mpirun -np 2 mpmFoam -parallel"
+
+# A decomposition leaving a processor without cells
+emptyRank="$SCRATCH/block3D.emptyRank"
+prepare block3D "$emptyRank"
+"$PY" -c "
+n = 14
+print('FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }')
+print(n**3); print('(')
+for k in range(n):
+    for j in range(n):
+        for i in range(n):
+            print(0 if i < 7 else 2)
+print(')')" > "$emptyRank/constant/cellDecomposition"
+decomposeCase "$emptyRank" 3 manual 'dataFile "cellDecomposition";'
+expectFailure "a decomposition that leaves processor 1 without cells" \
+    "Processor 1 has no cells: decompose for fewer processors" \
+    bash -c "cd '$emptyRank' && mpirun -np 3 mpmFoam -parallel"
 
 # A step far above the Courant limit moves points beyond their halo: a
 # clear stop, not lost points

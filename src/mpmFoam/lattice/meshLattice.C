@@ -11,6 +11,17 @@ Foam::meshLattice::meshLattice(const fvMesh& mesh)
 
 void Foam::meshLattice::build()
 {
+    const label empty = returnReduce
+    (
+        mesh_.nCells() == 0 ? Pstream::myProcNo() : labelMax, minOp<label>()
+    );
+    if (empty != labelMax)
+    {
+        FatalErrorInFunction
+            << "Processor " << empty << " has no cells: decompose for fewer"
+            << " processors, or give every processor cells (method scotch"
+            << " or hierarchical)" << exit(FatalError);
+    }
     const cellModel& hex = cellModel::ref(cellModel::HEX);
     const cellShapeList& shapes = mesh_.cellShapes();
     const pointField& pts = mesh_.points();
@@ -135,12 +146,6 @@ void Foam::meshLattice::build()
         if (Pstream::parRun()) localCell_.set(lin, celli);
         else latticeCell_[lin] = celli;
         cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
-    }
-    if (Pstream::parRun() && mesh_.nCells() == 0)
-    {
-        FatalErrorInFunction
-            << "Processor " << Pstream::myProcNo() << " has no cells: "
-            << "decompose for fewer processors" << exit(FatalError);
     }
 }
 
