@@ -3,7 +3,8 @@
 # A coupled case decomposed against serial: the underwater granular column
 # collapse (2D, 3200 points, Drucker-Prager sand in water, drag, buoyancy,
 # fluid fraction; 50 fluid steps of 9 MPM sub-cycles), serially and on 3
-# (scotch) and 2 (simple) ranks, also through foamRun.
+# (scotch) and 2 (simple) ranks, also through foamRun; and a periodic
+# coupled column split across its cyclic ends (processorCyclic patches).
 #
 # Why not bitwise, and the tolerance: the pressure solver's DIC
 # preconditioner is local to each processor in this OpenFOAM, so serial and
@@ -88,5 +89,28 @@ decomposeCase "$looseP" 2 simple "n (2 1 1);"
 loose=$(worst "$looseS" "$looseP")
 check "the serial/parallel difference follows the pressure solver's tolerance (loose $loose, tight $tight)" \
     "loose > 100*tight" loose="$loose" tight="$tight"
+
+# A periodic coupled column (tests/cases/periodicSuspensionCase: cyclic
+# ends, no walls) split in two along its axis: the cyclic pair becomes a
+# processorCyclic patch, where the solid flux must take the interior rule.
+per="$SCRATCH/periodicSerial"; perP="$SCRATCH/periodicParallel"
+cp -r "$MPMFOAM_ROOT/tests/cases/periodicSuspensionCase" "$per"
+sed -i 's/tolerance *1e-[0-9]*; *relTol *[0-9.]*;/tolerance 1e-14; relTol 0;/g' "$per/system/fvSolution"
+sed -i 's/^writePrecision .*/writePrecision  17;/' "$per/system/controlDict"
+(cd "$per" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+    || { echo "FAIL: periodic set-up"; failures=$((failures + 1)); }
+cp -r "$per" "$perP"
+(cd "$per" && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: periodic serial"; failures=$((failures + 1)); }
+decomposeCase "$perP" 2 simple "n (1 2 1);"
+grep -q processorCyclic "$perP/processor0/constant/polyMesh/boundary" \
+    || { echo "FAIL: no processorCyclic patch in the periodic decomposition"; failures=$((failures + 1)); }
+(cd "$perP" && mpirun -np 2 mpmFoam -parallel > log.run 2>&1 && reconstructPar -latestTime > log.reconstructPar 2>&1) \
+    || { echo "FAIL: periodic parallel run"; tail -20 "$perP/log.run"; failures=$((failures + 1)); }
+tPer=$(foamDictionary -entry endTime -value "$per/system/controlDict")
+tEnd=$tPer
+w=$(worst "$per" "$perP")
+f=$(fluidDiff "$per" "$perP")
+check "periodic coupled column on 2 ranks (processorCyclic): points and fluid within 1e-9 of serial" \
+    "w <= 1e-9 and f <= 1e-9" w="$w" f="${f:-1}"
 
 [ "$failures" -eq 0 ]
