@@ -15,6 +15,8 @@
 #     mass bits equal the seeded cloud's (exact conservation in migration);
 #   - reconstructPar output (cloud, alpha.solid, U.solid) equals serial;
 #   - a restart from a decomposed time reproduces the uninterrupted run;
+#   - re-decomposing at a restart with point weights (mpmPointWeights,
+#     weightField) balances the points and keeps the serial result;
 #   - mpmSetParticles -parallel seeds the points decomposePar gives;
 #   - MPI+OpenMP (2 ranks x 2 threads) equals 2 ranks x 1 thread bitwise;
 #   - mpirun -np 4 foamRun -solver mpmFoam -parallel equals mpmFoam bitwise;
@@ -139,6 +141,32 @@ runPar "$restarted" 2 log.restart
 first=$(grep -m1 "^Time = " "$restarted/log.restart" | awk '{print $3}')
 check "the restart starts from the decomposed time $tMid" "first > $tMid" first="${first:-0}"
 parity "restart from a decomposed time vs uninterrupted" "$uninterrupted" "$restarted" "$tEnd"
+
+# Re-decomposing at a restart with point weights (mpmPointWeights +
+# weightField): x slices put the whole block on one rank by t = 0.4; the
+# weighted scotch decomposition of that time balances the points, and the
+# continued run still equals the serial one.
+rebal="$SCRATCH/block3D.rebalance"
+prepare block3D "$rebal"
+decomposeCase "$rebal" 2 simple "n (2 1 1);"
+foamDictionary -entry endTime -set "$tMid" "$rebal/system/controlDict" > /dev/null
+runPar "$rebal" 2 log.first
+read -r bMean bMax <<< "$(grep "^MPM: points per processor" "$rebal/log.first" | tail -1 | sed 's/.*mean \([0-9.]*\), max \([0-9]*\).*/\1 \2/')"
+(cd "$rebal" && reconstructPar -latestTime > log.reconstructPar 2>&1 && mpmPointWeights -latestTime > log.mpmPointWeights 2>&1) \
+    || { echo "FAIL: reconstructPar / mpmPointWeights"; failures=$((failures + 1)); }
+cat > "$rebal/system/decomposeParDict" <<DEOF
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method scotch;
+weightField pointWeights;
+DEOF
+(cd "$rebal" && decomposePar -force -latestTime > log.decomposePar2 2>&1) || { echo "FAIL: decomposePar -latestTime"; failures=$((failures + 1)); }
+foamDictionary -entry endTime -set "$tEnd" "$rebal/system/controlDict" > /dev/null
+runPar "$rebal" 2 log.second
+read -r aMean aMax <<< "$(grep -m1 "^MPM: points per processor" "$rebal/log.second" | sed 's/.*mean \([0-9.]*\), max \([0-9]*\).*/\1 \2/')"
+check "point-weighted re-decomposition at a restart: max/mean points per rank falls" \
+    "bMax/bMean > 1.8 and aMax/aMean < 1.3" bMax="${bMax:-0}" bMean="${bMean:-1}" aMax="${aMax:-9}" aMean="${aMean:-1}"
+parity "re-decomposed restart vs serial" "$serial" "$rebal" "$tEnd"
 
 seeded="$SCRATCH/block3D.seedParallel"
 cp -r "$CASES/block3D" "$seeded"
