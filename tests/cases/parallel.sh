@@ -46,6 +46,24 @@ runPar()
         || { echo "FAIL: mpirun -np $2 mpmFoam in $1"; tail -30 "$1/${3:-log.mpmFoam}"; failures=$((failures + 1)); }
 }
 
+# manualSlices <dir> <rank of the x index i, a python expression>: a
+# constant/cellDecomposition for method manual on block3D's 14^3 box
+manualSlices()
+{
+    "$PY" - "$2" > "$1/constant/cellDecomposition" <<'PYEOF'
+import sys
+n = 14
+print("FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }")
+print(n**3)
+print("(")
+for k in range(n):
+    for j in range(n):
+        for i in range(n):
+            print(eval(sys.argv[1]))
+print(")")
+PYEOF
+}
+
 # parity <label> <serial dir> <parallel dir> <time> <n points>
 parity()
 {
@@ -96,15 +114,7 @@ for case in block3D periodic2D; do
         prepare "$case" "$par"
         if [ "$method" = manual ]; then
             # rank 1 owns the slab x = 7 (one cell thick), ranks 0 and 2 the sides
-            "$PY" -c "
-n = 14
-print('FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }')
-print(n**3); print('(')
-for k in range(n):
-    for j in range(n):
-        for i in range(n):
-            print(0 if i < 7 else (1 if i == 7 else 2))
-print(')')" > "$par/constant/cellDecomposition"
+            manualSlices "$par" "0 if i < 7 else (1 if i == 7 else 2)"
             coeffs="dataFile \"cellDecomposition\";"
         fi
         decomposeCase "$par" "$n" "$method" "$coeffs"
@@ -221,15 +231,7 @@ expectFailure "a case decomposed for 3 processors, its dictionary edited to 2, r
 # A decomposition leaving a processor without cells
 emptyRank="$SCRATCH/block3D.emptyRank"
 prepare block3D "$emptyRank"
-"$PY" -c "
-n = 14
-print('FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }')
-print(n**3); print('(')
-for k in range(n):
-    for j in range(n):
-        for i in range(n):
-            print(0 if i < 7 else 2)
-print(')')" > "$emptyRank/constant/cellDecomposition"
+manualSlices "$emptyRank" "0 if i < 7 else 2"
 decomposeCase "$emptyRank" 3 manual 'dataFile "cellDecomposition";'
 expectFailure "a decomposition that leaves processor 1 without cells" \
     "Processor 1 has no cells: decompose for fewer processors" \

@@ -16,10 +16,15 @@
 import os
 import sys
 
+# etc/python (mpmRender): of the tree this script is in, or of etc/bashrc's
+sys.path[:0] = [os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "etc", "python"),
+                os.path.join(os.environ.get("MPMFOAM_DIR", ""), "etc", "python")]
+from mpmRender import show_points, style_scalar_bar  # noqa: E402
+
 import numpy as np
 from paraview import servermanager
 from paraview.simple import (
-    ColorBy, CreateView, GetColorTransferFunction, GetScalarBar, MergeBlocks,
+    CreateView, GetScalarBar, MergeBlocks,
     OpenFOAMReader, Plane, PVTrivialProducer, ReloadFiles, Render,
     SaveScreenshot, Show, Text, UpdatePipeline,
 )
@@ -141,26 +146,10 @@ fd.AmbientColor = fd.DiffuseColor = [0.9, 0.9, 0.9]
 fd.Ambient, fd.Diffuse = 1.0, 0.0     # flat, unshaded
 fd.ColorArrayName = ["POINTS", ""]
 
-dd = Show(deposit, view)
-dd.SetRepresentationType("Points")
-dd.PointSize = 4
-dd.RenderPointsAsSpheres = 1
-ColorBy(dd, ("POINTS", "displacement"))
-lut = GetColorTransferFunction("displacement")
-lut.ApplyPreset("Viridis (matplotlib)", True)
+dd, lut = show_points(deposit, view, "displacement", 4)
 lut.RescaleTransferFunction(0.0, float(disp.max()))
 bar = GetScalarBar(lut, view)
-bar.Title = "displacement [m]"
-bar.ComponentTitle = ""
-bar.TitleColor = [0, 0, 0]
-bar.LabelColor = [0, 0, 0]
-bar.TitleFontSize = 20
-bar.LabelFontSize = 18
-bar.RangeLabelFormat = "%.2f"
-bar.Orientation = "Horizontal"
-bar.WindowLocation = "Any Location"
-bar.Position = [0.62, 0.06]
-bar.ScalarBarLength = 0.33
+style_scalar_bar(bar, "displacement [m]", "%.2f", [0.62, 0.06], 0.33)
 dd.SetScalarBarVisibility(view, True)
 
 # Initial column in red: rims at z = 0 and h0, and four generatrices

@@ -10,8 +10,13 @@
 import os
 import sys
 
+# etc/python (mpmRender): of the tree this script is in, or of etc/bashrc's
+sys.path[:0] = [os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "etc", "python"),
+                os.path.join(os.environ.get("MPMFOAM_DIR", ""), "etc", "python")]
+from mpmRender import show_points, style_scalar_bar  # noqa: E402
+
 from paraview.simple import (
-    ColorBy, CreateView, GetColorTransferFunction, GetScalarBar, Line,
+    CreateView, GetScalarBar, Line,
     MergeBlocks, OpenFOAMReader, Render, SaveScreenshot, Show, Text,
     UpdatePipeline,
 )
@@ -48,27 +53,11 @@ except AttributeError:
     pass
 view.OrientationAxesVisibility = 0
 
-disp = Show(points, view)
-disp.SetRepresentationType("Points")
-disp.PointSize = 6
-disp.RenderPointsAsSpheres = 1
-ColorBy(disp, ("POINTS", "plasticStrain"))
-lut = GetColorTransferFunction("plasticStrain")
-lut.ApplyPreset("Viridis (matplotlib)", True)
+disp, lut = show_points(points, view, "plasticStrain", 6)
 rng = points.PointData["plasticStrain"].GetRange()
 lut.RescaleTransferFunction(0.0, max(rng[1], 1e-12))
 bar = GetScalarBar(lut, view)
-bar.Title = "equivalent plastic strain"
-bar.ComponentTitle = ""
-bar.TitleColor = [0, 0, 0]
-bar.LabelColor = [0, 0, 0]
-bar.TitleFontSize = 20
-bar.LabelFontSize = 18
-bar.RangeLabelFormat = "%.1f"
-bar.Orientation = "Horizontal"
-bar.WindowLocation = "Any Location"
-bar.Position = [0.58, 0.62]
-bar.ScalarBarLength = 0.35
+style_scalar_bar(bar, "equivalent plastic strain", "%.1f", [0.58, 0.62], 0.35)
 disp.SetScalarBarVisibility(view, True)
 
 
