@@ -28,3 +28,17 @@ def show_points(source, view, field, point_size):
     lut = GetColorTransferFunction(field)
     lut.ApplyPreset("Viridis (matplotlib)", True)
     return display, lut
+
+
+def white_view(size):
+    """A render view of `size` pixels on a white background, no axes."""
+    from paraview.simple import CreateView
+    view = CreateView("RenderView")
+    view.ViewSize = list(size)
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0   # ParaView >= 5.10
+    except AttributeError:
+        pass
+    view.OrientationAxesVisibility = 0
+    return view

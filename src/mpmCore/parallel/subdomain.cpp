@@ -9,6 +9,15 @@ namespace mpm {
 
 namespace {
 
+// The Index values of a byte buffer
+std::vector<Index> indicesIn(const std::vector<char>& buf)
+{
+    std::vector<Index> out(buf.size()/sizeof(Index));
+    std::size_t at = 0;
+    readBytes(buf, at, out.data(), out.size());
+    return out;
+}
+
 std::string cellText(const int r[3])
 {
     return "(" + std::to_string(r[0]) + " " + std::to_string(r[1]) + " " + std::to_string(r[2]) + ")";
@@ -181,12 +190,8 @@ void Subdomain::build
     std::vector<std::vector<char>> answer(np), answered(np);
     for (int s = 0; s < np; ++s)
     {
-        const std::size_t n = recv[s].size()/sizeof(Index);
-        std::size_t at = 0;
-        for (std::size_t k = 0; k < n; ++k)
+        for (const Index id : indicesIn(recv[s]))
         {
-            Index id;
-            readBytes(recv[s], at, &id, 1);
             const int r[3] = {int(id % n0), int((id/n0) % n1), int(id/(n0*n1))};
             const Index l = localNode(r[0], r[1], r[2]);
             if (l >= 0 && boxOwner_[l] == me) appendBytes(answer[s], &id, 1);
@@ -195,14 +200,7 @@ void Subdomain::build
     comm.exchange(answer, answered, false);
     for (int q = 0; q < np; ++q)
     {
-        const std::size_t n = answered[q].size()/sizeof(Index);
-        std::size_t at = 0;
-        for (std::size_t k = 0; k < n; ++k)
-        {
-            Index id;
-            readBytes(answered[q], at, &id, 1);
-            owner_[id] = q;
-        }
+        for (const Index id : indicesIn(answered[q])) owner_[id] = q;
     }
     for (Index l = 0; l < nNodes; ++l)
     {
@@ -273,13 +271,11 @@ void Subdomain::build
     comm.exchange(ids, idsIn, false);
     for (int s = 0; s < np; ++s)
     {
-        const std::size_t n = idsIn[s].size()/sizeof(Index);
-        std::size_t at = 0;
-        ownerIdx_[s].resize(n);
-        for (std::size_t k = 0; k < n; ++k)
+        const std::vector<Index> gids(indicesIn(idsIn[s]));
+        ownerIdx_[s].resize(gids.size());
+        for (std::size_t k = 0; k < gids.size(); ++k)
         {
-            Index gid;
-            readBytes(idsIn[s], at, &gid, 1);
+            const Index gid = gids[k];
             int r[3];
             Index rest = gid;
             for (int a = 2; a >= 0; --a)
@@ -314,23 +310,32 @@ void Subdomain::build
     recvBuf_.assign(np, {});
 }
 
-void Subdomain::sum(const std::vector<Real*>& arrays) const
+void Subdomain::post
+(
+    const std::vector<Real*>& arrays,
+    const std::vector<std::vector<Index>>& from,
+    const std::vector<std::vector<Index>>& to
+) const
 {
-    const int np = comm_->size(), me = comm_->rank();
     const std::size_t k = arrays.size();
-    for (int q = 0; q < np; ++q)
+    for (int q = 0; q < comm_->size(); ++q)
     {
         auto& b = sendBuf_[q];
-        b.resize(copyIdx_[q].size()*k*sizeof(Real));
+        b.resize(from[q].size()*k*sizeof(Real));
         Real* v = reinterpret_cast<Real*>(b.data());
-        for (const Real* a : arrays) for (const Index l : copyIdx_[q]) *v++ = a[l];
-        recvBuf_[q].resize(ownerIdx_[q].size()*k*sizeof(Real));
+        for (const Real* a : arrays) for (const Index l : from[q]) *v++ = a[l];
+        recvBuf_[q].resize(to[q].size()*k*sizeof(Real));
     }
     comm_->exchange(sendBuf_, recvBuf_, true);
+}
+
+void Subdomain::sum(const std::vector<Real*>& arrays) const
+{
+    post(arrays, copyIdx_, ownerIdx_);
     // Fixed order (rank by rank): the sums do not depend on message timing.
-    for (int s = 0; s < np; ++s)
+    for (int s = 0; s < comm_->size(); ++s)
     {
-        if (s == me)
+        if (s == comm_->rank())
         {
             for (Real* a : arrays) for (const auto& pr : selfPairs_) a[pr.second] += a[pr.first];
             continue;
@@ -342,19 +347,9 @@ void Subdomain::sum(const std::vector<Real*>& arrays) const
 
 void Subdomain::copy(const std::vector<Real*>& arrays) const
 {
-    const int np = comm_->size();
-    const std::size_t k = arrays.size();
-    for (int q = 0; q < np; ++q)
-    {
-        auto& b = sendBuf_[q];
-        b.resize(ownerIdx_[q].size()*k*sizeof(Real));
-        Real* v = reinterpret_cast<Real*>(b.data());
-        for (const Real* a : arrays) for (const Index l : ownerIdx_[q]) *v++ = a[l];
-        recvBuf_[q].resize(copyIdx_[q].size()*k*sizeof(Real));
-    }
-    comm_->exchange(sendBuf_, recvBuf_, true);
+    post(arrays, ownerIdx_, copyIdx_);
     for (Real* a : arrays) for (const auto& pr : selfPairs_) a[pr.first] = a[pr.second];
-    for (int q = 0; q < np; ++q)
+    for (int q = 0; q < comm_->size(); ++q)
     {
         const Real* v = reinterpret_cast<const Real*>(recvBuf_[q].data());
         for (Real* a : arrays) for (const Index l : copyIdx_[q]) a[l] = *v++;

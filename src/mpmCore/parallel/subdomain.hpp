@@ -79,6 +79,14 @@ public:
 
 private:
     Index globalCellId(const int r[3]) const;
+    // Sends the values at from[q] to each rank q and sizes the receive
+    // buffers for to[q] (the halo lists are symmetric).
+    void post
+    (
+        const std::vector<Real*>& arrays,
+        const std::vector<std::vector<Index>>& from,
+        const std::vector<std::vector<Index>>& to
+    ) const;
     int ownerOfCell(Index globalCell) const;
 
     const Communicator* comm_ = nullptr;

@@ -19,12 +19,12 @@ import sys
 # etc/python (mpmRender): of the tree this script is in, or of etc/bashrc's
 sys.path[:0] = [os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "etc", "python"),
                 os.path.join(os.environ.get("MPMFOAM_DIR", ""), "etc", "python")]
-from mpmRender import show_points, style_scalar_bar  # noqa: E402
+from mpmRender import show_points, style_scalar_bar, white_view  # noqa: E402
 
 import numpy as np
 from paraview import servermanager
 from paraview.simple import (
-    CreateView, GetScalarBar, MergeBlocks,
+    GetScalarBar, MergeBlocks,
     OpenFOAMReader, Plane, PVTrivialProducer, ReloadFiles, Render,
     SaveScreenshot, Show, Text, UpdatePipeline,
 )
@@ -129,14 +129,7 @@ def polyline(points):
     return src
 
 
-view = CreateView("RenderView")
-view.ViewSize = [1600, 900]
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
-view.OrientationAxesVisibility = 0
+view = white_view([1600, 900])
 
 # Floor of the box (2 x 2 m) in light grey
 F = 1.0

@@ -13,10 +13,10 @@ import sys
 # etc/python (mpmRender): of the tree this script is in, or of etc/bashrc's
 sys.path[:0] = [os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "etc", "python"),
                 os.path.join(os.environ.get("MPMFOAM_DIR", ""), "etc", "python")]
-from mpmRender import show_points, style_scalar_bar  # noqa: E402
+from mpmRender import show_points, style_scalar_bar, white_view  # noqa: E402
 
 from paraview.simple import (
-    CreateView, GetScalarBar, Line,
+    GetScalarBar, Line,
     MergeBlocks, OpenFOAMReader, Render, SaveScreenshot, Show, Text,
     UpdatePipeline,
 )
@@ -43,15 +43,8 @@ n = points.GetDataInformation().GetNumberOfPoints()
 if n == 0:
     sys.exit("renderPoints.py: no material points read at t = %g" % tEnd)
 
-view = CreateView("RenderView")
-view.ViewSize = [1600, 860]
+view = white_view([1600, 860])
 view.ViewTime = tEnd
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
-view.OrientationAxesVisibility = 0
 
 disp, lut = show_points(points, view, "plasticStrain", 6)
 rng = points.PointData["plasticStrain"].GetRange()
