@@ -139,7 +139,8 @@ void Foam::mpmModel::reportBalance(Ostream& os) const
         << returnReduce(n, maxOp<label>()) << "; total " << total
         << ", id sum " << std::to_string(idSum).c_str()
         << ", mass checksum " << std::to_string(massSum).c_str()
-        << "; migrated " << returnReduce(label(system_.migratedCount()), sumOp<label>())
+        << "; migrated "
+        << std::to_string(comm_.sum(std::int64_t(system_.migratedCount()))).c_str()
         << nl;
 }
 
