@@ -296,6 +296,12 @@ void Foam::fluidPhase::setSolid(const volVectorField& Us, const boolList& capped
     }
 }
 
+Foam::scalar Foam::fluidPhase::courantNumber(scalar dt) const
+{
+    const scalarField sumPhi(fvc::surfaceSum(mag(phi_))().primitiveField());
+    return 0.5*gMax(sumPhi/mesh_.V().field())*dt;
+}
+
 Foam::scalar Foam::fluidPhase::continuityError() const
 {
     const volScalarField err(fvc::div(alphaPhi_ + alphaPhiSolid_));

@@ -1,6 +1,7 @@
 #include "mpmFoamModule.H"
 #include "addToRunTimeSelectionTable.H"
 #include "clockTime.H"
+#include "choice.H"
 
 namespace Foam
 {
@@ -20,14 +21,31 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
         pimple_.reset(new pimpleControl(mesh));
         fluid_.reset(new fluidPhase(mesh, pimple_()));
         coupling_.reset(new fluidCoupling(mesh, mpm_, fluid_()));
+
+        const dictionary& cd = runTime.controlDict();
+        adjustFluidStep_ = cd.getOrDefault<bool>("adjustTimeStep", false);
+        Info<< "Fluid time step: " << (adjustFluidStep_ ? "adjustable" : "fixed")
+            << " (controlDict adjustTimeStep)" << nl;
+        if (adjustFluidStep_)
+        {
+            maxCo_ = readBounded(cd, "maxCo", 1, SMALL, GREAT);
+            maxFluidDeltaT_ = readBounded(cd, "maxDeltaT", GREAT, SMALL, GREAT);
+        }
+        Info<< endl;
     }
 }
 
 Foam::scalar Foam::mpmFoamModule::maxDeltaT() const
 {
-    // Coupled: the fluid takes the controlDict deltaT and the solids
-    // sub-cycle within it, so the step is not limited here.
-    return coupled() ? VGREAT : mpm_.deltaT();
+    if (!coupled()) return mpm_.deltaT();
+    // Coupled: the solids sub-cycle within the fluid step, which is the
+    // controlDict deltaT, or adjusted to maxCo as pimpleFoam's setDeltaT.H
+    // does (growth at most 20 % a step, capped by maxDeltaT).
+    if (!adjustFluidStep_) return VGREAT;
+    const scalar dt = runTime.deltaTValue();
+    const scalar maxFact = maxCo_/(fluid_->courantNumber(dt) + SMALL);
+    const scalar fact = min(min(maxFact, 1 + 0.1*maxFact), 1.2);
+    return min(fact*dt, maxFluidDeltaT_);
 }
 
 void Foam::mpmFoamModule::prePredictor()
@@ -48,8 +66,22 @@ void Foam::mpmFoamModule::prePredictor()
     }
 
     // Coupled: the solids first, over the whole fluid step (explicit
-    // coupling: the fluid then sees their new fraction and velocity)
-    Info<< "Time = " << runTime.timeName() << nl << endl;
+    // coupling: the fluid then sees their new fraction and velocity).
+    // The fluid Courant number of this step, from the last flux.
+    const scalar Co = fluid_->courantNumber(dt);
+    Info<< "fluid: Courant Number max " << Co << " deltaT = " << dt << nl
+        << "Time = " << runTime.timeName() << nl << endl;
+    if (!adjustFluidStep_ && Co > 1 && !fluidCourantWarned_)
+    {
+        // Once per run: PIMPLE with one outer corrector is not reliable
+        // above ~1, and the answer changes with the step.
+        fluidCourantWarned_ = true;
+        WarningInFunction
+            << "The fluid step deltaT = " << dt << " gives Courant number "
+            << Co << " > 1 at time " << runTime.timeName() << ": use deltaT "
+            << "<= " << 0.5*dt/Co << " (Courant 0.5) in controlDict, or "
+            << "adjustTimeStep yes; maxCo 0.5;" << endl;
+    }
 
     coupling_->advanceSolids(dt);
     const label nSub = coupling_->lastSubCycles();
