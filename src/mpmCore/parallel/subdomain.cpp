@@ -47,18 +47,32 @@ bool Subdomain::ownsCell(Index id) const
     return ownerOfCell(id) == comm_->rank();
 }
 
-int Subdomain::ownerOfCell(Index id) const
+void Subdomain::cellCoords(Index id, int r[3]) const
 {
     const Index n0 = global_.nCells[0], n1 = global_.nCells[1];
-    const int r[3] = {int(id % n0), int((id/n0) % n1), int(id/(n0*n1))};
+    r[0] = int(id % n0);
+    r[1] = int((id/n0) % n1);
+    r[2] = int(id/(n0*n1));
+}
+
+int Subdomain::ownerAt(const int r[3]) const
+{
     const Index l = localNode(r[0], r[1], r[2]);
     if (l >= 0 && boxOwner_[l] >= 0) return boxOwner_[l];
-    const auto it = owner_.find(id);
+    const auto it = owner_.find(globalCellId(r));
     return it == owner_.end() ? -1 : it->second;
+}
+
+int Subdomain::ownerOfCell(Index id) const
+{
+    int r[3];
+    cellCoords(id, r);
+    return ownerAt(r);
 }
 
 int Subdomain::ownerOf(const Real* x) const
 {
+    // Called for every point every step: no id round trip.
     int r[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a)
     {
@@ -66,12 +80,7 @@ int Subdomain::ownerOf(const Real* x) const
         const Index c = Index(std::floor((x[a] - global_.origin[a])/global_.h));
         r[a] = int(std::min<Index>(std::max<Index>(c, 0), global_.nCells[a] - 1));
     }
-    // Called for every point every step: the box first, the map (periodic
-    // images beyond the box) only when that fails.
-    const Index l = localNode(r[0], r[1], r[2]);
-    if (l >= 0 && boxOwner_[l] >= 0) return boxOwner_[l];
-    const auto it = owner_.find(globalCellId(r));
-    return it == owner_.end() ? -1 : it->second;
+    return ownerAt(r);
 }
 
 void Subdomain::build
@@ -173,10 +182,10 @@ void Subdomain::build
     needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
 
     std::vector<std::vector<char>> send(np), recv(np);
-    const Index n0 = global.nCells[0], n1 = global.nCells[1];
     for (const Index id : needed)
     {
-        const int r[3] = {int(id % n0), int((id/n0) % n1), int(id/(n0*n1))};
+        int r[3];
+        cellCoords(id, r);
         for (int q = 0; q < np; ++q)
         {
             if (q == me) continue;
@@ -192,9 +201,7 @@ void Subdomain::build
     {
         for (const Index id : indicesIn(recv[s]))
         {
-            const int r[3] = {int(id % n0), int((id/n0) % n1), int(id/(n0*n1))};
-            const Index l = localNode(r[0], r[1], r[2]);
-            if (l >= 0 && boxOwner_[l] == me) appendBytes(answer[s], &id, 1);
+            if (ownsCell(id)) appendBytes(answer[s], &id, 1);
         }
     }
     comm.exchange(answer, answered, false);

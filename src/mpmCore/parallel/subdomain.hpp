@@ -79,6 +79,10 @@ public:
 
 private:
     Index globalCellId(const int r[3]) const;
+    void cellCoords(Index globalCell, int r[3]) const;
+    // Owner of the global real cell r: the box first, then the map
+    // (periodic images beyond the box); -1 if unknown here.
+    int ownerAt(const int r[3]) const;
     // Sends the values at from[q] to each rank q and sizes the receive
     // buffers for to[q] (the halo lists are symmetric).
     void post

@@ -90,7 +90,7 @@ public:
     // Decomposed runs: sends every point whose cell another rank owns to
     // that rank (all its fields); returns the number sent. Called by step()
     // after the points move; call it after reading or seeding points too.
-    // Throws NonFiniteError-free std::runtime_error if a point moved beyond
+    // Throws std::runtime_error (not NonFiniteError) if a point moved beyond
     // this rank's halo in one step.
     Index migrate();
     // Points this rank has sent to others so far.
@@ -99,8 +99,6 @@ public:
     // Global reductions (identity in serial runs).
     Real sumAll(Real x) const { return subdomain_ ? subdomain_->comm().sum(x) : x; }
     Real maxAll(Real x) const { return subdomain_ ? subdomain_->comm().max(x) : x; }
-    Real minAll(Real x) const { return subdomain_ ? subdomain_->comm().min(x) : x; }
-    std::int64_t sumAll(std::int64_t x) const { return subdomain_ ? subdomain_->comm().sum(x) : x; }
     const Boundary& boundary() const { return boundary_; }
     const StepOptions& options() const { return options_; }
     Particles& particles() { return particles_; }

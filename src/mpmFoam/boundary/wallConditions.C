@@ -26,14 +26,13 @@ mpm::BoundarySpec Foam::readWallConditions
 
     Info<< "Walls:" << nl;
     const scalar tol = 1e-6*L.h;
-    // Condition index of each patch. Decomposed, every rank has the same
-    // patches (some empty here) before its processor patches, so the
-    // indices agree and the ranks' faces can be combined below.
+    // Condition index of each patch, faces or not. Decomposed, every rank
+    // has the same patches (some empty here) before its processor patches,
+    // so the indices agree and the ranks' faces can be combined below.
     labelList patchCondition(mesh.boundaryMesh().size(), -1);
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
         if (isA<emptyPolyPatch>(pp) || isA<processorPolyPatch>(pp)) continue;
-        if (pp.empty() && !Pstream::parRun()) continue;
 
         mpm::WallCondition wc;
         if (isA<cyclicPolyPatch>(pp))

@@ -127,15 +127,13 @@ void Foam::meshLattice::build()
 
     cellNode_.setSize(mesh_.nCells());
     cellIjk_.resize(mesh_.nCells());
-    if (!Pstream::parRun()) latticeCell_.setSize(mesh_.nCells(), -1);
     forAll(mesh_.cellCentres(), celli)
     {
         label ijk[3];
         indicesOf(mesh_.cellCentres()[celli], ijk);
         cellIjk_[celli] = {int(ijk[0]), int(ijk[1]), int(ijk[2])};
         const label lin = lattice_.cellIndex(ijk[0], ijk[1], ijk[2]);
-        const label other = Pstream::parRun()
-            ? localCell_.lookup(lin, -1) : latticeCell_[lin];
+        const label other = latticeCell_.lookup(lin, -1);
         if (other != -1)
         {
             FatalErrorInFunction
@@ -143,19 +141,17 @@ void Foam::meshLattice::build()
                 << " map to the same lattice node: the mesh is not a "
                 << "uniform Cartesian box" << exit(FatalError);
         }
-        if (Pstream::parRun()) localCell_.set(lin, celli);
-        else latticeCell_[lin] = celli;
+        latticeCell_.set(lin, celli);
         cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
     }
 }
 
 void Foam::meshLattice::attach(const std::shared_ptr<const mpm::Subdomain>& subdomain)
 {
-    subdomain_ = subdomain;
     forAll(cellNode_, celli)
     {
         const auto& r = cellIjk_[celli];
-        cellNode_[celli] = label(subdomain_->localNode(r[0], r[1], r[2]));
+        cellNode_[celli] = label(subdomain->localNode(r[0], r[1], r[2]));
     }
 }
 
@@ -164,25 +160,23 @@ Foam::point Foam::meshLattice::cellCentre(label globalCell) const
     const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
     const label r[3] = {globalCell % n0, (globalCell/n0) % n1, globalCell/(n0*n1)};
     point c;
-    for (direction d = 0; d < 3; ++d) c[d] = lattice_.origin[d] + (r[d] + 0.5)*lattice_.h;
-    // Unsolved directions: the mesh's mid-plane
     for (direction d = 0; d < 3; ++d)
     {
-        if (!lattice_.solved[d]) c[d] = lattice_.origin[d] + 0.5*unsolvedSpan_[d];
+        // Unsolved directions: the mesh's mid-plane
+        c[d] = lattice_.origin[d]
+          + (lattice_.solved[d] ? (r[d] + 0.5)*lattice_.h : 0.5*unsolvedSpan_[d]);
     }
     return c;
 }
 
 bool Foam::meshLattice::ownsLatticeCell(label globalCell) const
 {
-    if (!Pstream::parRun()) return true;
-    return localCell_.found(globalCell);
+    return latticeCell_.found(globalCell);
 }
 
 Foam::label Foam::meshLattice::cellOf(label i, label j, label k) const
 {
-    if (!Pstream::parRun()) return latticeCell_[lattice_.cellIndex(i, j, k)];
-    return localCell_.lookup(lattice_.cellIndex(i, j, k), -1);
+    return latticeCell_.lookup(lattice_.cellIndex(i, j, k), -1);
 }
 
 void Foam::meshLattice::indicesOf(const point& x, label ijk[3]) const

@@ -25,15 +25,15 @@ word geometryType(const word& t)
 std::vector<label> sourceCells(const meshLattice& ml)
 {
     const mpm::Lattice& L = ml.lattice();
+    const int layer = Pstream::parRun() ? 1 : 0;
     std::vector<label> cells;
     for (const auto& r : ml.cellIndices())
     {
-        for (int dk = -1; dk <= 1; ++dk)
-        for (int dj = -1; dj <= 1; ++dj)
-        for (int di = -1; di <= 1; ++di)
+        for (int dk = -layer; dk <= layer; ++dk)
+        for (int dj = -layer; dj <= layer; ++dj)
+        for (int di = -layer; di <= layer; ++di)
         {
             const int d[3] = {di, dj, dk};
-            if (!Pstream::parRun() && (di || dj || dk)) continue;
             int c[3];
             bool ok = true;
             for (int a = 0; a < 3; ++a)
@@ -227,7 +227,7 @@ Foam::label Foam::seedRegions
         labelList count(L.nCells[0]*L.nCells[1]*L.nCells[2], 0);
         forAll(sources, si)
         {
-    if (!ml.ownsLatticeCell(sources[si])) continue;
+            if (!ml.ownsLatticeCell(sources[si])) continue;
             for (label q = 0; q < perCell; ++q) count[sources[si]] += inside[si*perCell + q] == volumeType::INSIDE;
         }
         if (Pstream::parRun())
@@ -267,10 +267,9 @@ Foam::label Foam::seedRegions
             }
         }
         idBase += regionTotal;
-        const label added = regionTotal;
-        Info<< "    " << added << " points of material "
+        Info<< "    " << regionTotal << " points of material "
             << materials.names()[mat] << ", " << ppc << " per cell" << nl;
-        if (added == 0)
+        if (regionTotal == 0)
         {
             WarningInFunction << "Region " << name << " contains no points" << nl;
         }
