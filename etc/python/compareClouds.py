@@ -2,7 +2,9 @@
 """Largest relative differences between the materialPoints clouds of two
 runs at one time, matched by pointId. Each run is a case directory: its own
 <time>/lagrangian (serial or reconstructed) or, with no such directory, its
-processor*/<time>/lagrangian (decomposed, read as is).
+processor*/<time>/lagrangian (decomposed, read as is), or else its HDF5
+checkpoint HDF5/materialPoints_<time>.h5 (pointOutput hdf5; its symmetric
+tensors are in OpenFOAM's order, so both formats compare directly).
 
     compareClouds.py CASE_A CASE_B TIME [--fields U stress ...]
 
@@ -32,7 +34,22 @@ def parts(case, time):
             if os.path.isdir(os.path.join(p, time, "lagrangian", "materialPoints"))]
 
 
+def read_hdf5(path, fields):
+    import h5py
+    with h5py.File(path, "r") as h5:
+        g = h5["materialPoints"]
+        ids = g["pointId"][...].astype(np.int64)
+        order = np.argsort(ids, kind="stable")
+        out = {"positions": g["position"][...][order]}
+        for f in fields:
+            out[f] = g[f][...].reshape(len(ids), -1)[order]
+    return ids[order], out
+
+
 def read(case, time, fields):
+    h5 = os.path.join(case, "HDF5", "materialPoints_%s.h5" % time)
+    if not parts(case, time) and os.path.isfile(h5):
+        return read_hdf5(h5, fields)
     data = {f: [] for f in fields}
     ids, pos = [], []
     for p in parts(case, time):

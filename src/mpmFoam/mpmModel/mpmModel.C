@@ -1,6 +1,5 @@
 #include "mpmModel.H"
 #include "wallConditions.H"
-#include "materialPointsIO.H"
 #include "Time.H"
 #include "clockTime.H"
 #include "floatingPointTraps.H"
@@ -40,7 +39,13 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
         system_.materials().push_back(materials_.create(m));
     }
 
-    readMaterialPoints(mesh, system_.particles());
+    pointFormat_ = materialPointsFormat::New(dict_, mesh, lattice_, comm_, materials_.names());
+    {
+        const clockTime timer;
+        pointFormat_->read(system_.particles());
+        Info<< "Read the material points in "
+            << returnReduce(timer.elapsedTime(), maxOp<scalar>()) << " s" << nl;
+    }
     const mpm::Particles& P = system_.particles();
     for (mpm::Index p = 0; p < P.size(); ++p)
     {
@@ -240,8 +245,11 @@ void Foam::mpmModel::write()
     // so fields and points describe the same instant.
     system_.mapToGrid();
     updateFields();
-    writeMaterialPoints(mesh_, lattice_, system_.particles());
-    ioTime_ += timer.elapsedTime();
+    pointFormat_->write(system_.particles());
+    const scalar seconds = returnReduce(timer.elapsedTime(), maxOp<scalar>());
+    ioTime_ += seconds;
+    Info<< "Wrote " << returnReduce(label(system_.particles().size()), sumOp<label>())
+        << " material points and the lattice fields in " << seconds << " s" << nl;
 }
 
 bool Foam::mpmModel::logThisStep() const
