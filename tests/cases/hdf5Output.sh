@@ -12,8 +12,8 @@
 #   - a serial restart from the middle time is bitwise the uninterrupted
 #     run; so is a 4-rank restart on the same decomposition;
 #   - restarts on another number of ranks, re-decomposed, straight from the
-#     file: 1 -> 3 and 4 -> 2 ranks, within 1e-10 of the uninterrupted run
-#     (the halo sums in another order);
+#     file: 1 -> 3 (one rank never has a point) and 4 -> 2 ranks, within
+#     1e-10 of the uninterrupted run (the halo sums in another order);
 #   - materials are matched by name: a material inserted before the body's
 #     in mpmProperties keeps its law; a renamed one is an error;
 #   - a write that never completed (its .tmp left behind) is never read,
@@ -159,13 +159,21 @@ run "$to2" mpirun -np 2 mpmFoam -parallel
 within "4 -> 2 ranks, re-decomposed, restarted from the file, against the uninterrupted 4-rank run" "$par4" "$to2" "$tEnd" 1e-10
 within "4 -> 2 ranks against serial" "$h5" "$to2" "$tEnd" 1e-10
 
+# 1 -> 3: rank 2 owns the slab x > 13/14, where no point is at the restart
+# (t = 0.4) nor at the end (t = 0.8, the write): it reads and writes with no
+# points
 to3="$SCRATCH/from1to3"
 cp -r "$h5" "$to3"
 rm -rf "$to3/$tEnd" "$to3/HDF5/materialPoints_$tEnd.h5"
-decomposeCase "$to3" 3 scotch
+manualSlices "$to3" "0 if i < 7 else (1 if i < 13 else 2)"
+decomposeCase "$to3" 3 manual 'dataFile "cellDecomposition";'
 startAt "$to3" "$tMid"
 run "$to3" mpirun -np 3 mpmFoam -parallel
 within "1 -> 3 ranks, restarted from the serial file, against the uninterrupted serial run" "$h5" "$to3" "$tEnd" 1e-10
+first=$(grep "^MPM: points per processor" "$to3/log.run" | head -1 | grep -c "min 0,")
+last=$(grep "^MPM: points per processor" "$to3/log.run" | tail -1 | grep -c "min 0,")
+check "1 -> 3: a rank without points at the read and at the write took part in both" \
+    "first == 1 and last == 1" first="$first" last="$last"
 
 # A write that never completed: only the .tmp of the last time exists
 killed="$SCRATCH/killedWrite"

@@ -46,23 +46,6 @@ runPar()
         || { echo "FAIL: mpirun -np $2 mpmFoam in $1"; tail -30 "$1/${3:-log.mpmFoam}"; failures=$((failures + 1)); }
 }
 
-# manualSlices <dir> <rank of the x index i, a python expression>: a
-# constant/cellDecomposition for method manual on block3D's 14^3 box
-manualSlices()
-{
-    "$PY" - "$2" > "$1/constant/cellDecomposition" <<'PYEOF'
-import sys
-n = 14
-print("FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }")
-print(n**3)
-print("(")
-for k in range(n):
-    for j in range(n):
-        for i in range(n):
-            print(eval(sys.argv[1]))
-print(")")
-PYEOF
-}
 
 # parity <label> <serial dir> <parallel dir> <time> <n points>
 parity()

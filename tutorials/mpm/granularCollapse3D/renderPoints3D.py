@@ -3,9 +3,11 @@
 #
 #     xvfb-run -a pvbatch renderPoints3D.py [case] [output.png]
 #
-# Reads the (reconstructed) case with ParaView's OpenFOAM reader, the seeded
-# cloud at t = 0 and the cloud at the last time, matches the points by
-# pointId and colours the final points by their displacement |x - x0|. The
+# Reads the seeded cloud at t = 0 with ParaView's OpenFOAM reader (the
+# lagrangian cloud mpmSetParticles wrote) and the last time of the run's
+# HDF5 checkpoints through their XDMF series (pointOutput hdf5: no
+# reconstructPar needed), matches the points by pointId and colours the
+# final points by their displacement |x - x0|. The
 # quadrant facing the camera (x < 0, y < 0) is cut away to show the inside
 # of the deposit: the undisturbed core and the flowing layer over it. The
 # initial column is drawn in red, the floor in grey.
@@ -26,7 +28,7 @@ from paraview import servermanager
 from paraview.simple import (
     GetScalarBar, MergeBlocks,
     OpenFOAMReader, Plane, PVTrivialProducer, ReloadFiles, Render,
-    SaveScreenshot, Show, Text, UpdatePipeline,
+    SaveScreenshot, Show, Text, UpdatePipeline, XDMFReader,
 )
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkPoints
@@ -48,17 +50,24 @@ reader.Lagrangianpositionswithoutextradata = 1
 reader.MeshRegions = ["lagrangian/materialPoints"]
 reader.LagrangianArrays = ["pointId", "plasticStrain"]
 reader.UpdatePipelineInformation()
-times = sorted(reader.TimestepValues) if reader.TimestepValues else [0.0]
-t0, tEnd = times[0], times[-1]
-if t0 != 0.0:
+if 0.0 not in (reader.TimestepValues or [0.0]):
     sys.exit("renderPoints3D.py: no cloud at t = 0 (the seeded points) in %s" % case)
-merged = MergeBlocks(Input=reader)
+seeded = MergeBlocks(Input=reader)
+
+# The run's checkpoints: ParaView's "XDMF Reader" on the series file
+series = XDMFReader(FileNames=[os.path.join(case, "materialPoints.xmf")])
+series.UpdatePipelineInformation()
+t0, tEnd = 0.0, max(series.TimestepValues)
 
 
-def cloud(t):
-    """Positions (n, 3) and pointIds (n,) at time t, sorted by pointId."""
-    UpdatePipeline(time=t, proxy=merged)
-    data = servermanager.Fetch(merged)
+def cloud(proxy, t, block=None):
+    """Positions (n, 3), pointIds (n,) and plastic strain at time t, sorted
+    by pointId; block: the name of the points' block in a multiblock."""
+    UpdatePipeline(time=t, proxy=proxy)
+    data = servermanager.Fetch(proxy)
+    if block is not None:
+        data = [data.GetBlock(b) for b in range(data.GetNumberOfBlocks())
+                if data.GetMetaData(b).Get(data.NAME()).startswith(block)][0]
     x = numpy_support.vtk_to_numpy(data.GetPoints().GetData()).astype(float)
     ids = numpy_support.vtk_to_numpy(data.GetPointData().GetArray("pointId")).astype(np.int64)
     eps = numpy_support.vtk_to_numpy(data.GetPointData().GetArray("plasticStrain")).astype(float)
@@ -66,8 +75,8 @@ def cloud(t):
     return x[order], ids[order], eps[order]
 
 
-x0, id0, _ = cloud(t0)
-x, ids, eps = cloud(tEnd)
+x0, id0, _ = cloud(seeded, t0)
+x, ids, eps = cloud(series, tEnd, "materialPoints")
 if len(x) == 0 or len(x) != len(x0) or not np.array_equal(id0, ids):
     sys.exit("renderPoints3D.py: the clouds at t = %g (%d points) and t = %g (%d) do not match"
              % (t0, len(x0), tEnd, len(x)))
