@@ -39,6 +39,84 @@ c=$(freshCopy frictionWithoutCoefficient)
 sed -i 's/fixedEnd { type noSlip; }/fixedEnd { type friction; }/' "$(props "$c")"
 expectFailure "friction wall without coefficient" "Missing keyword frictionCoefficient" runIn "$c" mpmFoam
 
+# Strict dictionaries: an unknown keyword (here a misspelling) is an error
+# naming the file, the keyword and the closest valid one, never ignored.
+c=$(freshCopy misspeltTopLevel)
+sed -i 's/^logInterval /logInteval  /' "$(props "$c")"
+expectFailure "misspelt mpmProperties keyword: did you mean" "Unknown keyword 'logInteval' in mpmProperties; did you mean 'logInterval'\?" runIn "$c" mpmFoam
+expectFailure "misspelt mpmProperties keyword: file and line" "file: .*constant/mpmProperties at line [0-9]+" runIn "$c" mpmFoam
+expectFailure "misspelt mpmProperties keyword: valid keywords" "Valid keywords: shapeFunction transfer flipRatio .* timeStep materials walls coupling pointOutput" runIn "$c" mpmFoam
+
+c=$(freshCopy unknownTopLevel)
+sed -i 's/^logInterval .*/colour blue;/' "$(props "$c")"
+expectFailure "unknown keyword, nothing close: no suggestion" "Unknown keyword 'colour' in mpmProperties$" runIn "$c" mpmFoam
+
+c=$(freshCopy misspeltTimeStep)
+sed -i 's/courant     0.1;/courrant    0.1;/' "$(props "$c")"
+expectFailure "misspelt timeStep keyword" "Unknown keyword 'courrant' in timeStep; did you mean 'courant'\?" runIn "$c" mpmFoam
+expectFailure "misspelt timeStep keyword names the file" "file: .*constant/mpmProperties.timeStep at line" runIn "$c" mpmFoam
+
+c=$(freshCopy timeStepNotDict)
+sed -i '/^timeStep/,/^}/d' "$(props "$c")"
+echo "timeStep fixed;" >> "$(props "$c")"
+expectFailure "timeStep that is not a dictionary" "Keyword timeStep must be a sub-dictionary timeStep \{ ... \}" runIn "$c" mpmFoam
+
+c=$(freshCopy misspeltCoefficient)
+sed -i 's/^        nu      0;/        Nu      0;/' "$(props "$c")"
+expectFailure "misspelt material coefficient" "Unknown keyword 'Nu' in material bar \(model linearElastic\); did you mean 'nu'\?" runIn "$c" mpmFoam
+expectFailure "misspelt coefficient lists the law's keywords" "Valid keywords: model rho E nu drag" runIn "$c" mpmFoam
+expectFailure "misspelt coefficient names the file (seeding too)" "file: .*constant/mpmProperties.materials.bar at line" runIn "$c" mpmSetParticles
+
+c=$(freshCopy misspeltDruckerPrager)
+sed -i 's/model   linearElastic;/model   druckerPrager; phi 30; pis 5;/' "$(props "$c")"
+expectFailure "misspelt optional coefficient of another law" "Unknown keyword 'pis' in material bar \(model druckerPrager\); did you mean 'psi'\?" runIn "$c" mpmFoam
+
+c=$(freshCopy materialNotDict)
+sed -i '/^materials$/,/^{/ s/^{/{\n    steel linearElastic;/' "$(props "$c")"
+expectFailure "material that is not a dictionary" "Entry 'steel' of materials \(one sub-dictionary per material\) is not a dictionary" runIn "$c" mpmFoam
+
+c=$(freshCopy misspeltWallKeyword)
+sed -i 's/fixedEnd { type noSlip; }/fixedEnd { type friction; frictionCoeficient 0.5; }/' "$(props "$c")"
+expectFailure "misspelt wall keyword" "Unknown keyword 'frictionCoeficient' in wall fixedEnd; did you mean 'frictionCoefficient'\?" runIn "$c" mpmFoam
+
+c=$(freshCopy wallNamesNoPatch)
+sed -i 's/fixedEnd { type noSlip; }/fixedEnds { type slip; }/' "$(props "$c")"
+expectFailure "walls entry naming no patch" "walls entry 'fixedEnds' matches no patch of the mesh; did you mean 'fixedEnd'\?" runIn "$c" mpmFoam
+expectFailure "walls entry naming no patch lists the patches" "Patches of the mesh: fixedEnd farEnd sides" runIn "$c" mpmFoam
+
+c=$(freshCopy wallRegexNoPatch)
+sed -i 's/fixedEnd { type noSlip; }/"(left|right)" { type slip; }/' "$(props "$c")"
+expectFailure "walls regex matching no patch" "walls entry '\(left\|right\)' matches no patch of the mesh$" runIn "$c" mpmFoam
+
+c=$(freshCopy wallNotDict)
+sed -i 's/fixedEnd { type noSlip; }/fixedEnd slip;/' "$(props "$c")"
+expectFailure "walls entry that is not a dictionary" "Entry 'fixedEnd' of walls \(one sub-dictionary per patch\) is not a dictionary" runIn "$c" mpmFoam
+
+# What OpenFOAM expands (#include, regular-expression keywords that match a
+# valid keyword) and the FoamFile header are not unknown keywords.
+c=$(freshCopy includeAndRegex)
+sed -i 's/^logInterval .*/#include "logControls"/; s/^        E       100;/        "(E|Young)" 100;/' "$(props "$c")"
+echo 'logInterval 100;' > "$c/constant/logControls"
+sed -i 's/^endTime .*/endTime 0.5;/' "$c/system/controlDict"
+if out=$(runIn "$c" mpmFoam 2>&1) && echo "$out" | grep -q "logInterval 100$"; then
+    echo "PASS: #include and a matching regular-expression keyword are accepted"
+else
+    echo "FAIL: #include or a regular-expression keyword rejected"; echo "$out" | tail -20; failures=$((failures + 1))
+fi
+
+c=$(freshCopy misspeltRegionKeyword)
+sed -i 's/pointsPerCell 2;/pointsPerCell 2;\n        ofset         (0.1 0 0);/' "$c/system/mpmSetParticlesDict"
+expectFailure "misspelt region keyword" "Unknown keyword 'ofset' in region bar \(type box\); did you mean 'offset'\?" runIn "$c" mpmSetParticles
+expectFailure "misspelt region keyword names the file" "file: .*system/mpmSetParticlesDict.regions.bar at line" runIn "$c" mpmSetParticles
+
+c=$(freshCopy misspeltVelocityKeyword)
+sed -i 's/type       sine;/type       sine;\n            phse       0.5;/' "$c/system/mpmSetParticlesDict"
+expectFailure "misspelt velocity keyword" "Unknown keyword 'phse' in velocity \(type sine\); did you mean 'phase'\?" runIn "$c" mpmSetParticles
+
+c=$(freshCopy misspeltSeedTopLevel)
+sed -i 's/^regions$/Regions/' "$c/system/mpmSetParticlesDict"
+expectFailure "misspelt mpmSetParticlesDict keyword" "Unknown keyword 'Regions' in mpmSetParticlesDict; did you mean 'regions'\?" runIn "$c" mpmSetParticles
+
 c=$(freshCopy nonUniformMesh)
 sed -i 's/simpleGrading (1 1 1)/simpleGrading (3 1 1)/' "$c/system/blockMeshDict"
 runIn "$c" blockMesh > /dev/null 2>&1

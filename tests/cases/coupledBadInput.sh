@@ -47,6 +47,28 @@ c=$(freshCopy noCoupling)
 sed -i '/^coupling/,/^}/d' "$(props "$c")"
 expectFailure "fluid case without coupling dictionary" "has no coupling" runIn "$c" mpmFoam
 
+# Strict dictionaries in a coupled case: a misspelt keyword is an error
+# naming the file, the keyword and the closest valid one, never ignored.
+c=$(freshCopy misspeltCoupling)
+sed -i 's/alphaMax    0.63;/alphaMx     0.63;/' "$(props "$c")"
+expectFailure "misspelt coupling keyword" "Unknown keyword 'alphaMx' in coupling; did you mean 'alphaMax'\?" runIn "$c" mpmFoam
+expectFailure "misspelt coupling keyword: file and valid keywords" "file: .*constant/mpmProperties.coupling at line" runIn "$c" mpmFoam
+expectFailure "misspelt coupling keyword lists the valid keywords" "Valid keywords: mode forces alphaMax subCycles Cvm" runIn "$c" mpmFoam
+
+c=$(freshCopy misspeltDrag)
+sed -i 's/drag    { model Ergun; d 1e-3; }/drag    { model Ergun; d 1e-3; alphaFmin 0.1; }/' "$(props "$c")"
+expectFailure "misspelt drag keyword" "Unknown keyword 'alphaFmin' in drag of material glass \(model Ergun\); did you mean 'alphaFMin'\?" runIn "$c" mpmFoam
+expectFailure "misspelt drag keyword names the file" "file: .*constant/mpmProperties.materials.glass.drag at line" runIn "$c" mpmFoam
+expectFailure "misspelt drag keyword (mpmSetParticles reads the materials too)" "Unknown keyword 'alphaFmin' in drag of material glass" runIn "$c" mpmSetParticles
+
+c=$(freshCopy dragNotDict)
+sed -i 's/drag    { model Ergun; d 1e-3; }/drag    Ergun;/' "$(props "$c")"
+expectFailure "drag that is not a dictionary" "Keyword drag must be a sub-dictionary drag \{ ... \}" runIn "$c" mpmFoam
+
+c=$(freshCopy misspeltDilatancy)
+sed -i 's/phi     30;/phi     30;\n        pis     5;/' "$(props "$c")"
+expectFailure "misspelt granular coefficient" "Unknown keyword 'pis' in material glass \(model druckerPrager\); did you mean 'psi'\?" runIn "$c" mpmFoam
+
 c=$(freshCopy noPressure)
 rm "$c/0/p"
 expectFailure "fluid case without p" "but no field p at time 0" runIn "$c" mpmFoam

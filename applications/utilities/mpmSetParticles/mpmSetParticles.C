@@ -16,6 +16,7 @@ Description
 #include "pointSeeder.H"
 #include "materialPointsIO.H"
 #include "cloud.H"
+#include "knownKeywords.H"
 
 int main(int argc, char *argv[])
 {
@@ -28,6 +29,7 @@ int main(int argc, char *argv[])
     const word dictName("mpmSetParticlesDict");
     #include "setSystemMeshDictionaryIO.H"
     const IOdictionary seedDict(dictIO);
+    checkKeywords(seedDict, {"regions"}, "mpmSetParticlesDict");
 
     const IOdictionary mpmDict
     (

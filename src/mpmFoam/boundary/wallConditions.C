@@ -1,9 +1,61 @@
 #include "wallConditions.H"
 #include "choice.H"
+#include "knownKeywords.H"
+#include "DynamicList.H"
 #include "cyclicPolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "processorPolyPatch.H"
+
+namespace
+{
+
+using namespace Foam;
+
+// Every walls entry must be a dictionary of known keywords that names (or
+// matches, as a regular expression) at least one patch; otherwise the patch
+// meant would silently be noSlip. Matched against the patch names, not their
+// faces: decomposed, a processor has every patch, some with no faces here.
+// Processor patches differ between ranks and are never walls.
+void checkWallEntries(const fvMesh& mesh, const dictionary& walls)
+{
+    checkAllSubDicts(walls, "walls (one sub-dictionary per patch)");
+    DynamicList<word> patches;
+    std::string patchNames;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<processorPolyPatch>(pp)) continue;
+        patches.append(pp.name());
+        patchNames += " " + pp.name();
+    }
+    for (const entry& e : walls)
+    {
+        const keyType& key = e.keyword();
+        if (key[0] == '#' || key[0] == '$') continue;
+        checkKeywords
+        (
+            e.dict(), {"type", "frictionCoefficient"},
+            "wall " + std::string(key)
+        );
+        bool matched = false;
+        for (const word& p : patches) matched = matched || key.match(p);
+        if (matched) continue;
+        const word close(key.isPattern() ? word::null : closestWord(key, patches));
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            walls.name(), e.startLineNumber(), e.endLineNumber()
+        )   << "walls entry '" << key.c_str() << "' matches no patch of the "
+            << "mesh" << (close.empty() ? "" : "; did you mean '" + close + "'?")
+            .c_str() << nl
+            << "Patches of the mesh:" << patchNames.c_str() << nl
+            << "(unlisted patches are noSlip, cyclic ones periodic)"
+            << exit(FatalIOError);
+    }
+}
+
+} // namespace
+
 
 mpm::BoundarySpec Foam::readWallConditions
 (
@@ -13,7 +65,8 @@ mpm::BoundarySpec Foam::readWallConditions
 )
 {
     const mpm::Lattice& L = ml.lattice();
-    const dictionary& walls = mpmDict.subOrEmptyDict("walls");
+    const dictionary& walls = optionalSubDict(mpmDict, "walls");
+    checkWallEntries(mesh, walls);
     mpm::BoundarySpec spec;
     spec.conditions.clear();
 

@@ -1,11 +1,26 @@
 #include "mpmControls.H"
 #include "choice.H"
+#include "knownKeywords.H"
 #include "uniformDimensionedFields.H"
 #include "Time.H"
 #include "step/mpmSystem.hpp"
 
 Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
 {
+    // The top level of mpmProperties: these controls, the sub-dictionaries
+    // read by materialLibrary, readWallConditions and fluidCoupling, and
+    // the point output format read by mpmModel.
+    checkKeywords
+    (
+        d,
+        {
+            "shapeFunction", "transfer", "flipRatio", "stressUpdate",
+            "massMatrix", "consistentMassIterations", "freezePositions",
+            "logInterval", "threadMinLoopSize", "timeStep",
+            "materials", "walls", "coupling", "pointOutput"
+        },
+        "mpmProperties"
+    );
     Info<< "MPM controls:" << nl;
     step.shape = readChoice
     (
@@ -46,7 +61,8 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
     mpm::MpmSystem::parallelThreshold =
         mpm::Index(readBounded(d, "threadMinLoopSize", 50000, 1, labelMax));
 
-    const dictionary& ts = d.subOrEmptyDict("timeStep");
+    const dictionary& ts = optionalSubDict(d, "timeStep");
+    checkKeywords(ts, {"type", "courant", "maxDeltaT"}, "timeStep");
     const word type(ts.getOrDefault<word>("type", "adaptive"));
     if (type != "adaptive" && type != "fixed")
     {

@@ -1,5 +1,6 @@
 #include "fluidCoupling.H"
 #include "choice.H"
+#include "knownKeywords.H"
 #include "uniformDimensionedFields.H"
 #include "Tuple2.H"
 
@@ -45,6 +46,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
             << "drag pressureGradient gravity virtualMass" << exit(FatalIOError);
     }
     const dictionary& d = mpmDict.subDict("coupling");
+    checkKeywords(d, {"mode", "forces", "alphaMax", "subCycles", "Cvm"}, "coupling");
     Info<< "Fluid coupling:" << nl;
     mode_ = readChoice(d, "mode", parseMode, modeName, "oneWay twoWayMomentum twoWay", couplingMode::twoWay);
 
@@ -129,12 +131,12 @@ void Foam::fluidCoupling::readDrag(const dictionary& mpmDict)
     forAll(names, i)
     {
         const dictionary& md = mats.subDict(names[i]);
-        if (!md.isDict("drag"))
+        if (!md.found("drag", keyType::LITERAL))
         {
             Info<< "    material " << names[i] << ": no drag" << nl;
             continue;
         }
-        const dictionary& dd = md.subDict("drag");
+        const dictionary& dd = optionalSubDict(md, "drag");
         if (!dd.found("model"))
         {
             FatalIOErrorInFunction(dd)
@@ -143,6 +145,7 @@ void Foam::fluidCoupling::readDrag(const dictionary& mpmDict)
                 << exit(FatalIOError);
         }
         const word model(dd.get<word>("model"));
+        // Its keywords are checked with the material's (materialLibrary).
         mpm::Coefficients coeffs;
         for (const entry& e : dd)
         {

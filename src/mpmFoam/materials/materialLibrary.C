@@ -1,5 +1,7 @@
 #include "materialLibrary.H"
 #include "IOstreams.H"
+#include "knownKeywords.H"
+#include "drag/dragLaw.hpp"
 #include <sstream>
 
 namespace
@@ -8,6 +10,25 @@ namespace
 std::string validModelNames()
 {
     return mpm::registryNames(mpm::availableLaws());
+}
+
+// The keywords of a material's drag sub-dictionary, checked here with the
+// material's own (coupled or not, and in mpmSetParticles too) rather than
+// only when a coupled run reads it. An unknown or missing drag model is
+// reported by fluidCoupling, which lists the valid ones.
+void checkDragKeywords(const Foam::dictionary& material, const std::string& name)
+{
+    using namespace Foam;
+    const dictionary& dd = optionalSubDict(material, "drag");
+    const word model(dd.getOrDefault<word>("model", word::null));
+    if (const mpm::DragLawInfo* info = mpm::findDragLaw(model))
+    {
+        checkKeywords
+        (
+            dd, modelKeywords({"model"}, info->parameters),
+            "drag of material " + name + " (model " + model + ")"
+        );
+    }
 }
 
 } // namespace
@@ -22,6 +43,7 @@ Foam::materialLibrary::materialLibrary(const dictionary& mpmDict, bool echo)
             << exit(FatalIOError);
     }
     const dictionary& mats = mpmDict.subDict("materials");
+    checkAllSubDicts(mats, "materials (one sub-dictionary per material)");
     for (const entry& e : mats)
     {
         if (!e.isDict()) continue;
@@ -43,6 +65,15 @@ Foam::materialLibrary::materialLibrary(const dictionary& mpmDict, bool echo)
                 << "Valid models: " << validModelNames().c_str()
                 << exit(FatalIOError);
         }
+
+        // The law knows its coefficients; drag is read by fluidCoupling
+        // (coupled cases only) and checked there against the drag law.
+        checkKeywords
+        (
+            d, modelKeywords({"model"}, info->parameters, {"drag"}),
+            "material " + name + " (model " + model + ")"
+        );
+        checkDragKeywords(d, name);
 
         if (echo) Info<< "Material " << name << ": " << model << " ("
             << info->summary.c_str() << ")" << nl;

@@ -4,6 +4,7 @@
 #include "Time.H"
 #include "symmTensor.H"
 #include "choice.H"
+#include "knownKeywords.H"
 #include <algorithm>
 
 namespace
@@ -18,6 +19,25 @@ word geometryType(const word& t)
     if (t == "sphere") return "searchableSphere";
     if (t == "stl") return "triSurfaceMesh";
     return t;
+}
+
+// Checks a region's keywords: its own and its geometry's coefficients, which
+// the searchableSurface reads (OpenFOAM v1912: sphere also takes origin).
+// The geometry of a searchableSurface type not listed here is not known to
+// us, so such a region is not checked.
+void checkRegionKeywords(const dictionary& d, const word& name, const word& geometry)
+{
+    wordList keys
+    {
+        "type", "material", "pointsPerCell", "offset", "velocity", "stress",
+        "solidFraction", "file"
+    };
+    if (geometry == "searchableBox") keys.append(wordList{"min", "max"});
+    else if (geometry == "searchableCylinder") keys.append(wordList{"point1", "point2", "radius"});
+    else if (geometry == "searchableSphere") keys.append(wordList{"centre", "origin", "radius"});
+    else if (geometry == "triSurfaceMesh") keys.append(wordList{"scale", "minQuality"});
+    else return;
+    checkKeywords(d, keys, "region " + name + " (type " + d.get<word>("type") + ")");
 }
 
 // Lattice cells (global linear index, lattice order) whose sub-cell points
@@ -64,10 +84,16 @@ public:
     {
         if (type_ == "uniform")
         {
+            checkKeywords(d, {"type", "value"}, "velocity (type uniform)");
             value_ = d.getOrDefault<vector>("value", Zero);
         }
         else if (type_ == "sine")
         {
+            checkKeywords
+            (
+                d, {"type", "amplitude", "wavenumber", "phase"},
+                "velocity (type sine)"
+            );
             amplitude_ = d.get<vector>("amplitude");
             wavenumber_ = d.get<vector>("wavenumber");
             phase_ = d.getOrDefault<scalar>("phase", 0);
@@ -103,6 +129,7 @@ Foam::label Foam::seedRegions
     const label n0 = points.size();
     label idBase = returnReduce(n0, sumOp<label>());
 
+    checkAllSubDicts(regions, "regions (one sub-dictionary per region)");
     for (const entry& e : regions)
     {
         if (!e.isDict()) continue;
@@ -112,6 +139,7 @@ Foam::label Foam::seedRegions
 
         dictionary geomDict(d);
         geomDict.set("type", geometryType(d.get<word>("type")));
+        checkRegionKeywords(d, name, geomDict.get<word>("type"));
         autoPtr<searchableSurface> surf = searchableSurface::New
         (
             geomDict.get<word>("type"),
@@ -186,7 +214,7 @@ Foam::label Foam::seedRegions
                 break;
             }
         }
-        const velocityField velocity(d.subOrEmptyDict("velocity"));
+        const velocityField velocity(optionalSubDict(d, "velocity"));
         const symmTensor sigma0(d.getOrDefault<symmTensor>("stress", Zero));
         // Share of the cell the grains fill: a suspension or a packed bed in
         // a fluid. A point is a parcel of mixture: its volume is its share of
