@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """I/O cost of the material points: for each size (cells per side n, 8
-points per cell, n^3 cells) and each format, one MPM step that writes, then
-a restart that only reads (endTime = the written time). Prints, per format
-and rank count: the write time and the restart's read time (both as the
-solver logs them: the slowest rank, wall clock) and the bytes on disk of one
-write time's points.
+points per cell, n^3 cells) and each format, three MPM steps that each
+write, then three restarts that only read (endTime = the last written
+time). Prints, per format and rank count: the median write time and the
+median read time (both as the solver logs them: the slowest rank, wall
+clock; the files are in the page cache, as right after a run) and the bytes
+on disk of one write time's points. The medians because the disk's
+write-back makes single writes noisy (0.4 to 1.7 s for the same 2-rank HDF5
+write of 1 M points, one after another).
 
 Formats: OpenFOAM's lagrangian cloud with writeFormat ascii and binary
 (pointOutput foam), and pointOutput hdf5 (one file, collective MPI-IO on 2
@@ -51,6 +54,10 @@ def base_case(n):
     return case
 
 
+def median(xs):
+    return sorted(xs)[len(xs)//2]
+
+
 def bytes_of(paths):
     total = 0
     for p in paths:
@@ -74,7 +81,7 @@ def measure(n, fmt, ranks):
         par = "mpirun -np %d " % ranks
     flag = " -parallel" if ranks > 1 else ""
     log = sh(par + "mpmFoam" + flag, case, "log.write")
-    wrote = float(re.findall(r"material points and the lattice fields in (\S+) s", log)[-1])
+    wrote = median([float(w) for w in re.findall(r"material points and the lattice fields in (\S+) s", log)])
     t = re.findall(r"^Time = (\S+)", log, re.M)[-1]
     if fmt == "hdf5":
         size = os.path.getsize(os.path.join(case, "HDF5", "materialPoints_%s.h5" % t))
@@ -82,15 +89,15 @@ def measure(n, fmt, ranks):
         dirs = [os.path.join(case, t, "lagrangian")] + [
             os.path.join(case, p, t, "lagrangian") for p in os.listdir(case) if p.startswith("processor")]
         size = bytes_of([d for d in dirs if os.path.isdir(d)])
-    log = sh(par + "mpmFoam" + flag, case, "log.read")
-    read = float(re.search(r"Read the material points in (\S+) s", log).group(1))
+    read = median([float(re.search(r"Read the material points in (\S+) s",
+                                   sh(par + "mpmFoam" + flag, case, "log.read")).group(1)) for _ in range(3)])
     row = [wrote, read, size]
     if fmt == "hdf5" and ranks > 1:
         # Restart on 1 rank from the 2-rank file: every point read and routed
         setfoam(case, "startFrom", "startTime")
         setfoam(case, "startTime", t)
-        log = sh("mpmFoam", case, "log.readOnOne")
-        row.append(float(re.search(r"Read the material points in (\S+) s", log).group(1)))
+        row.append(median([float(re.search(r"Read the material points in (\S+) s",
+                                           sh("mpmFoam", case, "log.readOnOne")).group(1)) for _ in range(3)]))
     shutil.rmtree(case, ignore_errors=True)
     return row
 

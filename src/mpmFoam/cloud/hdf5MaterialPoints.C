@@ -394,7 +394,10 @@ void Foam::hdf5MaterialPoints::distribute(mpm::Particles& P) const
     Pstream::listCombineGather(owner, maxEqOp<label>());
     Pstream::listCombineScatter(owner);
 
+    // Points of this rank's cells stay where they are (all of them when the
+    // processor count is the writer's); the others go to their owners.
     std::vector<std::vector<char>> send(comm_.size()), recv;
+    std::vector<mpm::Index> leaving;
     for (label p = 0; p < P.size(); ++p)
     {
         const point x(P.x[0][p], P.x[1][p], P.x[2][p]);
@@ -407,9 +410,11 @@ void Foam::hdf5MaterialPoints::distribute(mpm::Particles& P) const
                 << "Material point " << label(P.id[p]) << " at " << x
                 << " lies in no cell of the mesh" << exit(FatalError);
         }
+        if (q == Pstream::myProcNo()) continue;
         P.pack(p, send[q]);
+        leaving.push_back(p);
     }
     comm_.exchange(send, recv, false);
-    P.resize(0);
+    P.remove(leaving);
     for (const std::vector<char>& buf : recv) P.unpack(buf);
 }
