@@ -315,6 +315,13 @@ void Subdomain::build
     }
     sendBuf_.assign(np, {});
     recvBuf_.assign(np, {});
+
+    haloNodeList_.clear();
+    for (const auto& list : copyIdx_) haloNodeList_.insert(haloNodeList_.end(), list.begin(), list.end());
+    for (const auto& list : ownerIdx_) haloNodeList_.insert(haloNodeList_.end(), list.begin(), list.end());
+    for (const auto& pr : selfPairs_) { haloNodeList_.push_back(pr.first); haloNodeList_.push_back(pr.second); }
+    std::sort(haloNodeList_.begin(), haloNodeList_.end());
+    haloNodeList_.erase(std::unique(haloNodeList_.begin(), haloNodeList_.end()), haloNodeList_.end());
 }
 
 void Subdomain::post

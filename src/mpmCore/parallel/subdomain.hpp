@@ -69,6 +69,11 @@ public:
     // Values sent per sum() or copy() per array, summed over ranks'
     // messages from here (for the cost log and the docs' estimate).
     Index haloNodes() const;
+
+    // Every local node that sum() or copy() reads or writes, once: the
+    // sparse grid keeps them active (grid/activeRegion.hpp), since a copy
+    // here may carry another rank's material.
+    const std::vector<Index>& haloNodeList() const { return haloNodeList_; }
     int neighbourCount() const { return int(neighbours_.size()); }
 
     // Ranks sharing halo nodes with this one (a symmetric relation): the
@@ -107,6 +112,7 @@ private:
     // to recvIdx on rank r at the same k), and owners here <- copies there.
     std::vector<std::vector<Index>> copyIdx_, ownerIdx_;
     std::vector<std::pair<Index, Index>> selfPairs_;   // (copy, owner) here
+    std::vector<Index> haloNodeList_;
     std::vector<int> neighbours_;
     std::vector<char> isNeighbour_;
 

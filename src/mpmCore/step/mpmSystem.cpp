@@ -33,6 +33,8 @@ void MpmSystem::setup
     // Gravity along unsolved directions has nothing to act on.
     for (int a = 0; a < 3; ++a) if (!lattice_.solved[a]) options_.gravity[a] = 0;
     grid_.resize(lattice_.nNodes);
+    region_ = ActiveRegion();
+    region_.setDense(!options_.sparseGrid);
 }
 
 int MpmSystem::stencilReach(ShapeKind kind)
@@ -82,6 +84,34 @@ void MpmSystem::forEachPointColoured(Fn&& fn) const
     }
 }
 
+template<class Fn>
+void MpmSystem::forEachActiveNode(Fn&& fn) const
+{
+    const std::vector<Index>& list = region_.nodes();
+    const Index n = Index(list.size());
+    #pragma omp parallel for if(worthThreads(n))
+    for (Index k = 0; k < n; ++k) fn(list[k]);
+}
+
+void MpmSystem::binPoints()
+{
+    binning_.build(lattice_, particles_);
+    static const std::vector<Index> none;
+    auto& g = grid_;
+    region_.build
+    (
+        lattice_, binning_, stencilReach(options_.shape), boundary_,
+        subdomain_ ? subdomain_->haloNodeList() : none,
+        {
+            g.mass.data(), g.volume.data(),
+            g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data(),
+            g.force[0].data(), g.force[1].data(), g.force[2].data(),
+            g.velocityOld[0].data(), g.velocityOld[1].data(), g.velocityOld[2].data(),
+            g.velocity[0].data(), g.velocity[1].data(), g.velocity[2].data()
+        }
+    );
+}
+
 void MpmSystem::step(Real dt)
 {
     dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
@@ -94,7 +124,7 @@ void MpmSystem::mapToGrid()
     updateMassTolerance();
     dispatch([&](auto k, auto d)
     {
-        binning_.build(lattice_, particles_);
+        binPoints();
         scatter<decltype(k), decltype(d)::value>(true, false, false);
         sumHalo(foldMass | foldMomentum);
         foldGhosts(foldMass);
@@ -144,12 +174,12 @@ void MpmSystem::stepImpl(Real dt)
     const StressUpdate order = options_.stressUpdate;
     {
         ScopedTimer t(timers_.p2g);
-        binning_.build(lattice_, particles_);
+        binPoints();
         scatter<K, D>(true, order != StressUpdate::USF, false);
     }
     {
         ScopedTimer t(timers_.nodal);
-        if (order != StressUpdate::USF) addGravity(false);
+        addGravity();
         sumHalo(foldMass | foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
         foldGhosts(foldMass);
         decideWallContact(dt, order != StressUpdate::USF);
@@ -161,8 +191,9 @@ void MpmSystem::stepImpl(Real dt)
     {
         { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocityOld); }
         { ScopedTimer t(timers_.constitutive); updateStress(dt); }
+        // The internal force, added to the gravity already there
         { ScopedTimer t(timers_.p2g); scatter<K, D>(false, true, false); }
-        { ScopedTimer t(timers_.nodal); sumHalo(foldForce); addGravity(true); foldGhosts(foldForce); }
+        { ScopedTimer t(timers_.nodal); sumHalo(foldForce); foldGhosts(foldForce); }
     }
     {
         ScopedTimer t(timers_.nodal);
@@ -205,20 +236,16 @@ void MpmSystem::stepImpl(Real dt)
 template<class K, int D>
 void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
 {
+    // Only the active region can be non-zero (binPoints zeroed the rest).
+    // A fresh P2G (massMomentum) starts every array from zero; the force
+    // scatter alone (USF) adds the internal force to the gravity there.
     auto& g = grid_;
-    if (massMomentum || velocityOnly)
-    {
-        for (int d = 0; d < 3; ++d) std::fill(g.momentum[d].begin(), g.momentum[d].end(), 0.0);
-    }
     if (massMomentum)
     {
-        std::fill(g.mass.begin(), g.mass.end(), 0.0);
-        std::fill(g.volume.begin(), g.volume.end(), 0.0);
+        region_.zero({g.mass.data(), g.volume.data(), g.momentum[0].data(), g.momentum[1].data(),
+                      g.momentum[2].data(), g.force[0].data(), g.force[1].data(), g.force[2].data()});
     }
-    if (force)
-    {
-        for (int d = 0; d < 3; ++d) std::fill(g.force[d].begin(), g.force[d].end(), 0.0);
-    }
+    if (velocityOnly) region_.zero({g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()});
     auto pick = [](bool x, auto&& k) { if (x) k(std::true_type{}); else k(std::false_type{}); };
     pick(massMomentum, [&](auto mm)
     {
@@ -300,18 +327,18 @@ void MpmSystem::updateMassTolerance()
     massTolerance_ = count > 0 ? 1e-10*total/count : 0;
 }
 
-void MpmSystem::addGravity(bool ownerSideOnly)
+void MpmSystem::addGravity()
 {
+    // On the P2G masses, before the halo sum and the wall fold, like the
+    // internal force: a ghost's weight is reflected onto its image with its
+    // momentum, and each rank's share of a halo node is counted once.
     const auto& gr = options_.gravity;
-    const Index n = lattice_.nNodes;
-    const char* owner = ownerSideOnly && subdomain_ ? subdomain_->ownerSide().data() : nullptr;
-    #pragma omp parallel for if(worthThreads(n))
-    for (Index I = 0; I < n; ++I)
+    auto& g = grid_;
+    forEachActiveNode([&](Index I)
     {
-        if (owner && !owner[I]) continue;
-        const Real m = grid_.mass[I];
-        for (int d = 0; d < 3; ++d) grid_.force[d][I] += m*gr[d];
-    }
+        const Real m = g.mass[I];
+        for (int d = 0; d < 3; ++d) g.force[d][I] += m*gr[d];
+    });
 }
 
 void MpmSystem::sumHalo(unsigned what)
@@ -337,7 +364,7 @@ void MpmSystem::sumHalo(const std::vector<Real*>& arrays)
     }
     // Serial: the periodic copies are the halo.
     const auto& pc = boundary_.periodicCopies();
-    for (Real* a : arrays) for (const auto& c : pc) a[c.second] += a[c.first];
+    for (Real* a : arrays) for (const Index c : region_.periodicCopies()) a[pc[c].second] += a[pc[c].first];
 }
 
 void MpmSystem::copyHalo(const std::vector<Real*>& arrays) const
@@ -349,7 +376,7 @@ void MpmSystem::copyHalo(const std::vector<Real*>& arrays) const
         return;
     }
     const auto& pc = boundary_.periodicCopies();
-    for (Real* a : arrays) for (const auto& c : pc) a[c.first] = a[c.second];
+    for (Real* a : arrays) for (const Index c : region_.periodicCopies()) a[pc[c].first] = a[pc[c].second];
 }
 
 void MpmSystem::foldGhosts(unsigned what)
@@ -368,9 +395,10 @@ void MpmSystem::foldGhosts(unsigned what)
 void MpmSystem::foldScalar(std::vector<Real>& a) const
 {
     // Serial and in a fixed order: an image may receive from several ghosts.
-    for (const auto& gh : boundary_.ghosts()) a[gh.image] += a[gh.ghost];
+    const auto& ghosts = boundary_.ghosts();
+    for (const Index k : region_.ghosts()) a[ghosts[k].image] += a[ghosts[k].ghost];
     // Ghosts then hold their image's values (for completeness).
-    for (const auto& gh : boundary_.ghosts()) a[gh.ghost] = a[gh.image];
+    for (const Index k : region_.ghosts()) a[ghosts[k].ghost] = a[ghosts[k].image];
 }
 
 // Contact of unilateral (slip, friction) walls, per image node: with the
@@ -381,25 +409,28 @@ void MpmSystem::foldScalar(std::vector<Real>& a) const
 void MpmSystem::decideWallContact(Real dt, bool withForce)
 {
     const auto& ghosts = boundary_.ghosts();
+    const auto& active = region_.ghosts();
     ghostSign_.resize(ghosts.size());
-    for (std::size_t k = 0; k < ghosts.size(); ++k) ghostSign_[k] = ghosts[k].sign;
+    for (const Index k : active) ghostSign_[k] = ghosts[k].sign;
 
     auto& trial = nodeScratch_;
     for (auto& a : trial) a.resize(lattice_.nNodes);
     const auto& g = grid_;
     auto term = [&](int a, Index I) { return g.momentum[a][I] + (withForce ? dt*g.force[a][I] : 0.0); };
-    for (const auto& gh : ghosts)
+    for (const Index k : active)
     {
+        const auto& gh = ghosts[k];
         if (gh.unilateralAxis < 0) continue;
         const int a = gh.unilateralAxis;
         // The force includes gravity when given; otherwise add it here.
         trial[a][gh.image] = term(a, gh.image) + (withForce ? 0.0 : dt*g.mass[gh.image]*options_.gravity[a]);
     }
-    for (const auto& gh : ghosts)
+    for (const Index k : active)
     {
+        const auto& gh = ghosts[k];
         if (gh.unilateralAxis >= 0) trial[gh.unilateralAxis][gh.image] += term(gh.unilateralAxis, gh.ghost);
     }
-    for (std::size_t k = 0; k < ghosts.size(); ++k)
+    for (const Index k : active)
     {
         const auto& gh = ghosts[k];
         if (gh.unilateralAxis < 0) continue;
@@ -410,34 +441,34 @@ void MpmSystem::decideWallContact(Real dt, bool withForce)
 
 void MpmSystem::foldVector(std::array<std::vector<Real>, 3>& a) const
 {
-    for (const auto& gh : boundary_.ghosts())
+    const auto& ghosts = boundary_.ghosts();
+    for (const Index k : region_.ghosts())
     {
-        const auto& sign = ghostSign_[&gh - boundary_.ghosts().data()];
-        for (int d = 0; d < 3; ++d) a[d][gh.image] += sign[d]*a[d][gh.ghost];
+        const auto& gh = ghosts[k];
+        for (int d = 0; d < 3; ++d) a[d][gh.image] += ghostSign_[k][d]*a[d][gh.ghost];
     }
 }
 
 void MpmSystem::fillGhosts(std::array<std::vector<Real>, 3>& v) const
 {
-    for (const auto& gh : boundary_.ghosts())
+    const auto& ghosts = boundary_.ghosts();
+    for (const Index k : region_.ghosts())
     {
-        const auto& sign = ghostSign_[&gh - boundary_.ghosts().data()];
-        for (int d = 0; d < 3; ++d) v[d][gh.ghost] = sign[d]*v[d][gh.image];
+        const auto& gh = ghosts[k];
+        for (int d = 0; d < 3; ++d) v[d][gh.ghost] = ghostSign_[k][d]*v[d][gh.image];
     }
     copyHalo({v[0].data(), v[1].data(), v[2].data()});
 }
 
 void MpmSystem::nodalVelocity(std::array<std::vector<Real>, 3>& v) const
 {
-    const Index n = lattice_.nNodes;
     const Real tol = massTolerance_;
-    #pragma omp parallel for if(worthThreads(n))
-    for (Index I = 0; I < n; ++I)
+    forEachActiveNode([&](Index I)
     {
         const Real m = grid_.mass[I];
         const Real inv = m > tol ? 1.0/m : 0.0;
         for (int d = 0; d < 3; ++d) v[d][I] = grid_.momentum[d][I]*inv;
-    }
+    });
 }
 
 template<class K, int D>
@@ -467,11 +498,10 @@ void MpmSystem::nodalUpdate(Real dt)
     // is implicit and the added mass M_a = Cvm rho_f V_s too:
     //   D = dt K + M_a,
     //   rhs += dt (V_s F + K U + M_a a_f) + M_a v_old.
-    #pragma omp parallel for if(worthThreads(n))
-    for (Index I = 0; I < n; ++I)
+    forEachActiveNode([&](Index I)
     {
         for (int d = 0; d < 3; ++d) nodeRhs_[d][I] = g.momentum[d][I] + dt*g.force[d][I];
-        if (!coupled) continue;
+        if (!coupled) return;
         const Real Ma = addedMass ? c.addedMassDensity*g.volume[I] : 0.0;
         nodeDiag_[I] = dt*c.K[I] + Ma;
         for (int d = 0; d < 3; ++d)
@@ -479,18 +509,18 @@ void MpmSystem::nodalUpdate(Real dt)
             nodeRhs_[d][I] += dt*(g.volume[I]*c.F[d][I] + c.K[I]*c.U[d][I]);
             if (addedMass) nodeRhs_[d][I] += Ma*(g.velocityOld[d][I] + dt*c.fluidAcceleration[d][I]);
         }
-    }
+    });
     solveMass<K, D>(nodeRhs_, g.velocity, coupled ? &nodeDiag_ : nullptr);
     applyFriction(g.velocity);
     fillGhosts(g.velocity);
     if (coupling_.active())
     {
         auto& c = coupling_;
-        #pragma omp parallel for if(worthThreads(n))
-        for (Index I = 0; I < n; ++I)
+        // Outside the region the velocity is zero: the integral keeps its sum
+        forEachActiveNode([&](Index I)
         {
             for (int d = 0; d < 3; ++d) c.velocityIntegral[d][I] += dt*g.velocity[d][I];
-        }
+        });
         c.time += dt;
     }
 }
@@ -511,12 +541,11 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
     const auto& m = grid_.mass;
     // Jacobi preconditioner: the lumped mass plus the extra diagonal
     auto diagonal = [&](Index I) { return diag ? m[I] + (*diag)[I] : m[I]; };
-    #pragma omp parallel for if(worthThreads(nNodes))
-    for (Index I = 0; I < nNodes; ++I)
+    forEachActiveNode([&](Index I)
     {
         const Real inv = m[I] > tol ? 1.0/diagonal(I) : 0.0;
         for (int d = 0; d < 3; ++d) x[d][I] = rhs[d][I]*inv;
-    }
+    });
     if (options_.massMatrix == MassMatrix::lumped) return;
 
     fillGhosts(x);
@@ -540,7 +569,7 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
             });
             for (int d = 0; d < 3; ++d) pointScratch_[d][p] = P.mass[p]*u[d];
         }
-        for (auto& a : nodeScratch_) std::fill(a.begin(), a.end(), 0.0);
+        region_.zero({Mx[0], Mx[1], Mx[2]});
         forEachPointColoured([&](Index p)
         {
             Stencil<K, D> s;
@@ -553,13 +582,12 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
         });
         sumHalo({nodeScratch_[0].data(), nodeScratch_[1].data(), nodeScratch_[2].data()});
         foldVector(nodeScratch_);
-        #pragma omp parallel for if(worthThreads(nNodes))
-        for (Index I = 0; I < nNodes; ++I)
+        forEachActiveNode([&](Index I)
         {
             const Real inv = m[I] > tol ? 1.0/diagonal(I) : 0.0;
             const Real Dx = diag ? (*diag)[I] : 0.0;
             for (int d = 0; d < 3; ++d) x[d][I] += (rhs[d][I] - Mx[d][I] - Dx*x[d][I])*inv;
-        }
+        });
         fillGhosts(x);
     }
 }

@@ -10,6 +10,7 @@
 // number of solved directions.
 #pragma once
 #include "../constitutive/constitutiveLaw.hpp"
+#include "../grid/activeRegion.hpp"
 #include "../grid/boundary.hpp"
 #include "../grid/gridState.hpp"
 #include "../grid/lattice.hpp"
@@ -106,6 +107,8 @@ public:
     const GridState& grid() const { return grid_; }
     const StepTimers& timers() const { return timers_; }
     Index stepCount() const { return stepCount_; }
+    // Nodes of the last step's active region (all nodes: sparseGrid off)
+    Index activeNodeCount() const { return Index(region_.nodes().size()); }
     void setGravity(const std::array<Real, 3>& g) { options_.gravity = g; }
     void setConstantGrainVolume(bool on) { options_.constantGrainVolume = on; }
 
@@ -152,6 +155,10 @@ private:
                                             const std::vector<Real>* diag = nullptr);
     template<class Fn> void dispatch(Fn&& f);
     template<class Fn> void forEachPointColoured(Fn&& fn) const;
+    // Bins the points and builds this step's active region
+    void binPoints();
+    // fn(node) for every node of the active region (threaded when long)
+    template<class Fn> void forEachActiveNode(Fn&& fn) const;
 
     enum FoldWhat : unsigned { foldMass = 1, foldMomentum = 2, foldForce = 4 };
     // Adds every halo copy of the chosen arrays into its owner (after P2G,
@@ -172,8 +179,8 @@ private:
     void fillGhosts(std::array<std::vector<Real>, 3>& v) const;
     void nodalVelocity(std::array<std::vector<Real>, 3>& v) const;
     void updateMassTolerance();
-    // ownerSideOnly: after the halo sum (each node's weight counted once)
-    void addGravity(bool ownerSideOnly);
+    // m g on every node, from the P2G masses (before the halo sum and fold)
+    void addGravity();
     template<class K, int D> void nodalUpdate(Real dt);
     template<class K, int D> void massToVelocity(std::array<std::vector<Real>, 3>& v);
     void applyFriction(std::array<std::vector<Real>, 3>& v) const;
@@ -189,6 +196,7 @@ private:
     std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;
     GridState grid_;
     Binning binning_;
+    ActiveRegion region_;
     mutable StepTimers timers_;
     FluidCoupling coupling_;
     Index stepCount_ = 0;

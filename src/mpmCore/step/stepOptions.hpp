@@ -51,6 +51,9 @@ struct StepOptions
     // incompressible grains fill part of it: J changes the packing, not the
     // grains).
     bool constantGrainVolume = false;
+    // Grid work only where the material is (grid/activeRegion.hpp); false:
+    // over the whole lattice, the reference the sparse step must equal.
+    bool sparseGrid = true;
 };
 
 } // namespace mpm

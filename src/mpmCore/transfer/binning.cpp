@@ -11,6 +11,8 @@ void Binning::build(const Lattice& L, const Particles& p)
     {
         if (L.solved[a]) nb[a] = (L.nCells[a] + blockEdge(a) - 1)/blockEdge(a);
     }
+    nb_ = nb;
+    for (int a = 0; a < 3; ++a) nCells_[a] = L.solved[a] ? L.nCells[a] : 1;
     nColours_ = 1 << L.dim;
     blocksPerColourKey_ = nb[0]*nb[1]*nb[2];
     const Index nKeys = Index(nColours_)*blocksPerColourKey_;

@@ -12,6 +12,8 @@
 #pragma once
 #include "../grid/lattice.hpp"
 #include "../particles/particles.hpp"
+#include <algorithm>
+#include <array>
 #include <vector>
 
 namespace mpm {
@@ -34,9 +36,33 @@ public:
     Index start(Index key) const { return start_[key]; }
     const std::vector<Index>& order() const { return order_; }
 
+    // Calls f(lo, hi) with the real cell range (inclusive, per axis; 0 in
+    // unsolved directions) of every block that holds points.
+    template<class Fn>
+    void forEachOccupiedBlock(Fn&& f) const
+    {
+        const Index nKeys = Index(nColours_)*blocksPerColourKey_;
+        for (Index key = 0; key < nKeys; ++key)
+        {
+            if (start_[key + 1] == start_[key]) continue;
+            Index b = key % blocksPerColourKey_;
+            int lo[3], hi[3];
+            for (int a = 0; a < 3; ++a)
+            {
+                const Index ba = b % nb_[a];
+                b /= nb_[a];
+                lo[a] = int(ba)*blockEdge(a);
+                hi[a] = std::min(lo[a] + blockEdge(a), nCells_[a]) - 1;
+            }
+            f(lo, hi);
+        }
+    }
+
 private:
     int nColours_ = 1;
     Index blocksPerColourKey_ = 1;
+    std::array<Index, 3> nb_{1, 1, 1};     // blocks per axis
+    std::array<int, 3> nCells_{1, 1, 1};   // real cells per axis
     std::vector<Index> start_;
     std::vector<Index> order_;
     std::vector<Index> key_;
