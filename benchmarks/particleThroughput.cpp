@@ -3,10 +3,12 @@
 // Prints particle-steps/s for LH, QBS and CBS at 1 and 2 OpenMP threads, all
 // in one run so the ratios share the machine's state.
 //
-//   build/benchmarks/particleThroughput [cells=32] [steps=20]
+//   build/benchmarks/particleThroughput [cells=32] [steps=20] [shuffle=0] [reorder=1]
 #include "constitutive/constitutiveLaw.hpp"
 #include "step/mpmSystem.hpp"
+#include <algorithm>
 #include <chrono>
+#include <random>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -30,7 +32,7 @@ std::string cpuModel()
     return "unknown";
 }
 
-MpmSystem makeBlock(ShapeKind shape, int n)
+MpmSystem makeBlock(ShapeKind shape, int n, bool reorder, bool shuffle)
 {
     // The block is n^3 cells; the lattice adds 4 empty cells on each side.
     const int m = n + 8;
@@ -41,6 +43,7 @@ MpmSystem makeBlock(ShapeKind shape, int n)
     StepOptions o;
     o.shape = shape;
     o.gravity = {0, 0, -9.81};
+    o.reorderPoints = reorder;
     MpmSystem s;
     s.setup(L, b, o);
     s.materials().push_back(makeLaw("linearElastic", {{"rho", 1000}, {"E", 1e6}, {"nu", 0.3}}));
@@ -57,6 +60,15 @@ MpmSystem makeBlock(ShapeKind shape, int n)
         const Real z = (k + 0.25 + 0.5*((c >> 2) & 1))*h;
         s.particles().add({x, y, z}, {0.1, 0, 0}, 1000*vol, vol, 0);
     }
+    if (shuffle)
+    {
+        // Storage order unrelated to space: points after long mixing
+        std::vector<Index> order(s.particles().size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = Index(i);
+        std::mt19937 rng(1);
+        std::shuffle(order.begin(), order.end(), rng);
+        s.particles().permute(order);
+    }
     return s;
 }
 
@@ -66,9 +78,14 @@ int main(int argc, char** argv)
 {
     const int n = argc > 1 ? std::atoi(argv[1]) : 32;
     const int steps = argc > 2 ? std::atoi(argv[2]) : 20;
+    // Optional: 1 to shuffle the points' storage order first (points after
+    // long mixing), and 0 to switch off StepOptions::reorderPoints
+    const bool shuffle = argc > 3 && std::atoi(argv[3]) != 0;
+    const bool reorder = argc > 4 ? std::atoi(argv[4]) != 0 : true;
     utsname u; uname(&u);
-    std::printf("# particleThroughput: 3D elastic block of %d^3 cells in a %d^3 lattice, 8 points/cell\n",
-                n, n + 8);
+    std::printf("# particleThroughput: 3D elastic block of %d^3 cells in a %d^3 lattice, 8 points/cell%s%s\n",
+                n, n + 8, shuffle ? ", points stored in random order" : "",
+                reorder ? "" : ", reorderPoints off");
     double load[3] = {0, 0, 0};
     if (getloadavg(load, 3) < 0) load[0] = -1;
     std::printf("# machine: %s, %ld cores, %s %s, load average %.2f (other work skews 2-thread runs most)\n",
@@ -80,7 +97,7 @@ int main(int argc, char** argv)
     for (int threads = 1; threads <= maxThreads; ++threads)
     {
         omp_set_num_threads(threads);
-        MpmSystem s = makeBlock(shape, n);
+        MpmSystem s = makeBlock(shape, n, reorder, shuffle);
         const Real dt = s.stableDeltaT(0.5);
         s.step(dt);   // warm-up: first-touch allocation
         const StepTimers t0 = s.timers();

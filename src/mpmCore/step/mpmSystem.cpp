@@ -96,6 +96,11 @@ void MpmSystem::forEachActiveNode(Fn&& fn) const
 void MpmSystem::binPoints()
 {
     binning_.build(lattice_, particles_);
+    if (options_.reorderPoints && binning_.fragmented())
+    {
+        particles_.permute(binning_.order());
+        binning_.setIdentityOrder();
+    }
     static const std::vector<Index> none;
     auto& g = grid_;
     region_.build

@@ -36,6 +36,18 @@ public:
     Index start(Index key) const { return start_[key]; }
     const std::vector<Index>& order() const { return order_; }
 
+    // Whether the storage order is far from the block order: the runs of
+    // consecutive indices in order() are shorter than 8 on average
+    bool fragmented() const
+    {
+        Index breaks = 0;
+        for (std::size_t q = 1; q < order_.size(); ++q) breaks += order_[q] != order_[q - 1] + 1;
+        return 8*breaks > Index(order_.size());
+    }
+
+    // After the points were permuted into order(): they are in block order
+    void setIdentityOrder() { for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = Index(i); }
+
     // Calls f(lo, hi) with the real cell range (inclusive, per axis; 0 in
     // unsolved directions) of every block that holds points.
     template<class Fn>
