@@ -139,6 +139,16 @@ expectFailure "no material points" "No material points in" runIn "$c" mpmFoam
 
 expectFailure "no material points: what to do" "Seed them with mpmSetParticles" runIn "$c" mpmFoam
 
+# A zero or negative fixed step would never advance the time (a hang with
+# writeControl timeStep, a division by zero with adjustableRunTime).
+c=$(freshCopy zeroFixedStep)
+sed -i 's/type        adaptive;/type        fixed;/' "$(props "$c")"
+sed -i 's/^deltaT .*/deltaT          0;/' "$c/system/controlDict"
+expectFailure "zero fixed time step" "Keyword deltaT = 0 is out of range \(0, inf\) \(the fixed MPM step, timeStep \{ type fixed; \}\)" runIn "$c" mpmFoam
+expectFailure "zero fixed time step names controlDict" "file: .*system/controlDict" runIn "$c" mpmFoam
+sed -i 's/^deltaT .*/deltaT          -0.01;/; s/^writeControl .*/writeControl timeStep;/; s/^writeInterval .*/writeInterval 10;/' "$c/system/controlDict"
+expectFailure "negative fixed time step (writeControl timeStep)" "Keyword deltaT = -0.01 is out of range \(0, inf\)" runIn "$c" mpmFoam
+
 c=$(freshCopy nanDuringRun)
 # A fixed step ten times the stability limit: the bar blows up to inf/NaN.
 sed -i 's/type        adaptive;/type        fixed;/' "$(props "$c")"

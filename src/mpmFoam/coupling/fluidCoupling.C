@@ -66,7 +66,9 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         }
     }
     Info<< "    forces " << forces << " (others are not computed)" << nl;
-    alphaMax_ = readBounded(d, "alphaMax", 0.63, SMALL, 1);
+    // Below 1: the fluid keeps a share of every cell (alpha.fluid >= 1 -
+    // alphaMax divides the pressure equation and the drag)
+    alphaMax_ = readBounded(d, "alphaMax", 0.63, numberRange{0, 1, false, false});
     const entry* sc = d.findEntry("subCycles", keyType::LITERAL);
     if (sc && !(sc->stream()[0].isWord() && sc->stream()[0].wordToken() == "auto"))
     {

@@ -2,6 +2,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "clockTime.H"
 #include "choice.H"
+#include "mpmControls.H"
 
 namespace Foam
 {
@@ -22,6 +23,7 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
         fluid_.reset(new fluidPhase(mesh, pimple_()));
         coupling_.reset(new fluidCoupling(mesh, mpm_, fluid_()));
 
+        checkStep(runTime, "the fluid step; the grains sub-cycle within it");
         const dictionary& cd = runTime.controlDict();
         adjustFluidStep_ = cd.getOrDefault<bool>("adjustTimeStep", false);
         Info<< "Fluid time step: " << (adjustFluidStep_ ? "adjustable" : "fixed")
