@@ -3,6 +3,7 @@
 #include "Time.H"
 #include "clockTime.H"
 #include "floatingPointTraps.H"
+#include "compressionCheck.H"
 #include <omp.h>
 #include <cstring>
 
@@ -220,6 +221,7 @@ void Foam::mpmModel::evolve(scalar dt)
             << e.what() << nl << "Nothing was written for this time."
             << exit(FatalError);
     }
+    stopIfInverted(system_.particles(), materials_.names(), label(system_.stepCount()), mesh_.time());
     ++steps_;
 }
 
