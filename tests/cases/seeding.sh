@@ -102,4 +102,13 @@ if grep -q "replaces 4000 points (mass 62.5) of earlier regions where they overl
 else
     echo "FAIL: overlap not reported in the log"; tail -12 "$log"; failures=$((failures + 1))
 fi
+# overlap add: a mixture, the earlier points are kept (0.125*1000 + 0.125*2000)
+sed -i 's/material n; pointsPerCell 2; }/material n; pointsPerCell 2; overlap add; }/' "$c/system/mpmSetParticlesDict"
+rm -rf "$c/0"
+(cd "$c" && mpmSetParticles > log.mpmSetParticles.add 2>&1) || { echo "FAIL: seeding overlap add"; tail -20 "$c/log.mpmSetParticles.add"; }
+mass=$("$PY" -c "import mpmPost; print(mpmPost.read_cloud_field('$c', '0', 'mass').sum())")
+check "overlap add: a mixture keeps both regions' points (375 kg)" "abs(mass - 375) <= 1e-9*375" mass="$mass"
+sed -i 's/overlap add;/overlap replaec;/' "$c/system/mpmSetParticlesDict"
+rm -rf "$c/0"
+expectFailure "unknown overlap rule" "Unknown overlap 'replaec'.*|Valid overlap choices: replace add" runIn "$c" mpmSetParticles
 finish

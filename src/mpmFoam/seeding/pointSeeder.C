@@ -31,7 +31,7 @@ void checkRegionKeywords(const dictionary& d, const word& name, const word& geom
     wordList keys
     {
         "type", "material", "pointsPerCell", "offset", "velocity", "stress",
-        "solidFraction", "file"
+        "solidFraction", "file", "overlap"
     };
     if (geometry == "searchableBox") keys.append(wordList{"min", "max"});
     else if (geometry == "searchableCylinder") keys.append(wordList{"point1", "point2", "radius"});
@@ -261,8 +261,21 @@ Foam::label Foam::seedRegions
         }
 
         // The later region wins: the points of earlier regions inside this
-        // one go (seeding both would double the mass in the overlap).
-        const Tuple2<label, scalar> replaced(removeInside(surf(), points, n0, regionOf));
+        // one go (seeding both would double the mass in the overlap), unless
+        // it says `overlap add` (a mixture: each region its solidFraction).
+        const word overlap(d.getOrDefault<word>("overlap", "replace"));
+        if (overlap != "replace" && overlap != "add")
+        {
+            FatalIOErrorInFunction(d)
+                << "Unknown overlap '" << overlap << "'" << nl
+                << "Valid overlap choices: replace add" << exit(FatalIOError);
+        }
+        const Tuple2<label, scalar> replaced
+        (
+            overlap == "add" ? Tuple2<label, scalar>(0, 0)
+          : removeInside(surf(), points, n0, regionOf)
+        );
+        if (overlap == "add") Info<< "    overlap add: earlier points kept" << nl;
         if (replaced.first())
         {
             Info<< "    replaces " << replaced.first() << " points (mass "
