@@ -21,6 +21,7 @@ Description
 #include "materialPointsIO.H"
 #include "cloud.H"
 #include "knownKeywords.H"
+#include "completeTimes.H"
 
 int main(int argc, char *argv[])
 {
@@ -98,7 +99,8 @@ int main(int argc, char *argv[])
     Info<< nl << "Writing " << n << " material points (total mass " << mass
         << ") to " << runTime.timeName()/cloud::prefix/materialPointsCloudName
         << nl << endl;
-    writeMaterialPoints(mesh, lattice, points);
+    writeMaterialPoints(mesh, lattice, points, materials.names());
+    markTimeComplete(runTime);
 
     Info<< "End\n" << endl;
     return 0;

@@ -4,6 +4,7 @@
 #include "clockTime.H"
 #include "floatingPointTraps.H"
 #include "compressionCheck.H"
+#include "completeTimes.H"
 #include <omp.h>
 #include <cstring>
 
@@ -31,6 +32,9 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
         mesh, dimensionedVector(dimVelocity, Zero)
     )
 {
+    // Before anything of the start time is read: a half-written time would
+    // fail with a parse error, or give points whose fields disagree
+    checkTimeComplete(mesh.time());
     lattice_.report(Info);
     suspendPoolThreadTraps();
     const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_));

@@ -3,6 +3,7 @@
 #include "clockTime.H"
 #include "choice.H"
 #include "mpmControls.H"
+#include "completeTimes.H"
 
 namespace Foam
 {
@@ -120,6 +121,9 @@ void Foam::mpmFoamModule::postSolve()
 
 void Foam::mpmFoamModule::postWrite()
 {
+    // After runTime.write(): every field of this time is on disk
+    if (runTime.writeTime()) markTimeComplete(runTime);
+
     if (coupled() || logStep_ || runTime.writeTime())
     {
         mpm_.report(Info);
