@@ -22,7 +22,13 @@ void Foam::markTimeComplete(const Time& runTime)
 
 void Foam::checkTimeComplete(const Time& runTime)
 {
-    const bool complete = returnReduce(isFile(marker(runTime.timePath())), andOp<bool>());
+    // No directory: nothing half-written (an HDF5 checkpoint, complete by
+    // its rename, restarted on processors that never wrote this time)
+    const bool complete = returnReduce
+    (
+        !isDir(runTime.timePath()) || isFile(marker(runTime.timePath())),
+        andOp<bool>()
+    );
     if (complete) return;
 
     // The earlier times of the case, and the last complete one among them
