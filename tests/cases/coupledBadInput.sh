@@ -90,6 +90,11 @@ c=$(freshCopy zeroFluidStep)
 sed -i 's/^deltaT .*/deltaT          0;/' "$c/system/controlDict"
 expectFailure "zero fluid time step" "Keyword deltaT = 0 is out of range \(0, inf\) \(the fluid step" runIn "$c" mpmFoam
 
+c=$(freshCopy tinyDiameter)
+sed -i 's/drag    { model Ergun; d 1e-3; }/drag    { model Ergun; d 1e-200; }/' "$(props "$c")"
+expectFailure "a grain diameter in range but absurd (drag overflows)" "the drag coefficient beta is not finite in cell [0-9]+ at" runIn "$c" mpmFoam
+expectFailure "drag overflow: what to check" "check their values and units \(d in m\)" runIn "$c" mpmFoam
+
 c=$(freshCopy noPressure)
 rm "$c/0/p"
 expectFailure "fluid case without p" "but no field p at time 0" runIn "$c" mpmFoam

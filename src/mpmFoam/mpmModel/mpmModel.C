@@ -7,6 +7,7 @@
 #include "completeTimes.H"
 #include <omp.h>
 #include <cstring>
+#include <regex>
 
 Foam::mpmModel::mpmModel(const fvMesh& mesh)
 :
@@ -210,9 +211,20 @@ void Foam::mpmModel::evolve(scalar dt)
     }
     catch (const mpm::NonFiniteError& e)
     {
+        // The core knows a material by its index: name it
+        std::string what(e.what());
+        std::smatch m;
+        if (std::regex_search(what, m, std::regex("\\(material ([0-9]+)\\)")))
+        {
+            const label k = std::stoi(m[1].str());
+            if (k < materials_.size())
+            {
+                what = m.prefix().str() + "(material " + materials_.names()[k] + ")" + m.suffix().str();
+            }
+        }
         FatalErrorInFunction
             << "Stopping at time " << mesh_.time().timeName() << ": "
-            << e.what() << nl
+            << what.c_str() << nl
             << "Nothing was written for this time. Reduce the time step "
             << "(timeStep courant) or check the material coefficients."
             << exit(FatalError);
