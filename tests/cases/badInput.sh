@@ -139,11 +139,38 @@ expectFailure "no material points" "No material points in" runIn "$c" mpmFoam
 
 expectFailure "no material points: what to do" "Seed them with mpmSetParticles" runIn "$c" mpmFoam
 
+# A zero or negative fixed step would never advance the time (a hang with
+# writeControl timeStep, a division by zero with adjustableRunTime).
+c=$(freshCopy zeroFixedStep)
+sed -i 's/type        adaptive;/type        fixed;/' "$(props "$c")"
+sed -i 's/^deltaT .*/deltaT          0;/' "$c/system/controlDict"
+expectFailure "zero fixed time step" "Keyword deltaT = 0 is out of range \(0, inf\) \(the fixed MPM step, timeStep \{ type fixed; \}\)" runIn "$c" mpmFoam
+expectFailure "zero fixed time step names controlDict" "file: .*system/controlDict" runIn "$c" mpmFoam
+sed -i 's/^deltaT .*/deltaT          -0.01;/; s/^writeControl .*/writeControl timeStep;/; s/^writeInterval .*/writeInterval 10;/' "$c/system/controlDict"
+expectFailure "negative fixed time step (writeControl timeStep)" "Keyword deltaT = -0.01 is out of range \(0, inf\)" runIn "$c" mpmFoam
+
+# mpmSetParticles in a case that has run (startFrom latestTime selects the
+# run's last time) would replace that time's points: refused unless asked.
+c=$(freshCopy seedAfterRun)
+sed -i 's/^endTime .*/endTime 1;/; s/^writeInterval .*/writeInterval 1;/' "$c/system/controlDict"
+runIn "$c" mpmFoam > "$c/log.mpmFoam" 2>&1
+sum1=$(cksum < "$c/1/lagrangian/materialPoints/U")
+expectFailure "mpmSetParticles over a run's results" "Time 1 holds the results of a run \(after controlDict startTime 0; mpmFoam fields alpha.solid U.solid\)" runIn "$c" mpmSetParticles
+expectFailure "mpmSetParticles over a run's results: what to do" "remove the later times \(foamListTimes -rm\).*mpmSetParticles -overwrite" runIn "$c" mpmSetParticles
+check "mpmSetParticles refused: the run's points are untouched" "same == 1" same="$([ "$sum1" = "$(cksum < "$c/1/lagrangian/materialPoints/U")" ] && echo 1 || echo 0)"
+if runIn "$c" mpmSetParticles -overwrite > "$c/log.overwrite" 2>&1 && [ "$sum1" != "$(cksum < "$c/1/lagrangian/materialPoints/U")" ]; then
+    echo "PASS: mpmSetParticles -overwrite replaces the points"
+else
+    echo "FAIL: mpmSetParticles -overwrite"; tail -5 "$c/log.overwrite"; failures=$((failures + 1))
+fi
+
 c=$(freshCopy nanDuringRun)
 # A fixed step ten times the stability limit: the bar blows up to inf/NaN.
 sed -i 's/type        adaptive;/type        fixed;/' "$(props "$c")"
 sed -i 's/^deltaT .*/deltaT          1;/; s/^writeInterval .*/writeInterval   1;/; s/^endTime .*/endTime 100000;/' "$c/system/controlDict"
-expectFailure "NaN during run names step and point" "non-finite .* at step [0-9]+ in material point id [0-9]+" runIn "$c" mpmFoam
+# It stops at the first non-physical state: a point crushed through itself
+# (J <= 0, compressionCheck) or, failing that, a non-finite value (the core).
+expectFailure "blow-up names step and point" "non-finite .* at step [0-9]+ in material point id [0-9]+|step [0-9]+: material point id [0-9]+ \(material bar\) is compressed to zero volume or below" runIn "$c" mpmFoam
 expectFailure "a fixed step above Courant 1 is warned about first" "The MPM step .* set by timeStep fixed .* gives Courant number [0-9.e+]+ > 1" runIn "$c" mpmFoam
 bad=$(grep -rliE "\bnan\b|\binf\b" "$c"/[0-9]*/lagrangian "$c"/[0-9]*/*.solid 2>/dev/null | head -3)
 if [ -z "$bad" ]; then echo "PASS: no NaN/inf written"; else echo "FAIL: NaN written in $bad"; failures=$((failures + 1)); fi

@@ -69,6 +69,32 @@ c=$(freshCopy misspeltDilatancy)
 sed -i 's/phi     30;/phi     30;\n        pis     5;/' "$(props "$c")"
 expectFailure "misspelt granular coefficient" "Unknown keyword 'pis' in material glass \(model druckerPrager\); did you mean 'psi'\?" runIn "$c" mpmFoam
 
+# Numbers that used to end in a floating-point exception (the traps stay on
+# in the fluid solver): range errors naming the file and keyword instead.
+c=$(freshCopy negativeViscosity)
+sed -i 's/^nu .*/nu              -1e-6;/' "$c/constant/transportProperties"
+expectFailure "negative fluid viscosity" "Keyword nu = -1e-06 is out of range \(0, inf\)" runIn "$c" mpmFoam
+expectFailure "negative fluid viscosity names transportProperties" "file: .*constant/transportProperties" runIn "$c" mpmFoam
+
+c=$(freshCopy zeroDensity)
+sed -i 's/^rho .*/rho             0;/' "$c/constant/transportProperties"
+expectFailure "zero fluid density" "Keyword rho = 0 is out of range \(0, inf\)" runIn "$c" mpmFoam
+
+c=$(freshCopy fullPacking)
+sed -i 's/alphaMax    0.63;/alphaMax    1;/' "$(props "$c")"
+sed -i 's/solidFraction 0.6;/solidFraction 1;/' "$c/system/mpmSetParticlesDict"
+runIn "$c" mpmSetParticles > /dev/null 2>&1
+expectFailure "alphaMax 1 with grains at solidFraction 1" "Keyword alphaMax = 1 is out of range \(0, 1\)" runIn "$c" mpmFoam
+
+c=$(freshCopy zeroFluidStep)
+sed -i 's/^deltaT .*/deltaT          0;/' "$c/system/controlDict"
+expectFailure "zero fluid time step" "Keyword deltaT = 0 is out of range \(0, inf\) \(the fluid step" runIn "$c" mpmFoam
+
+c=$(freshCopy tinyDiameter)
+sed -i 's/drag    { model Ergun; d 1e-3; }/drag    { model Ergun; d 1e-200; }/' "$(props "$c")"
+expectFailure "a grain diameter in range but absurd (drag overflows)" "the drag coefficient beta is not finite in cell [0-9]+ at" runIn "$c" mpmFoam
+expectFailure "drag overflow: what to check" "check their values and units \(d in m\)" runIn "$c" mpmFoam
+
 c=$(freshCopy noPressure)
 rm "$c/0/p"
 expectFailure "fluid case without p" "but no field p at time 0" runIn "$c" mpmFoam

@@ -110,4 +110,5 @@ check "first contact after free flight, before continuum touch + 0.1" \
 # 5. Symmetry
 check "max |Ucm| < 1e-8 |v0|" "u < 1e-8*v0" u="$(fig Ucm_max)" v0=0.14142135623730951
 
+seededPoints "$c" "elasticDisks: "
 finish

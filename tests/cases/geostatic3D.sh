@@ -70,4 +70,5 @@ PYEOF
 echo "geostatic 3D: mean |sigma_zz - rho g (H - z)| / mean |rho g (H - z)| = $err; lateral ratio / (nu/(1-nu)) = $ratio"
 check "vertical stress follows rho g (H - z) within 3 %" "e <= 0.03" e="$err"
 check "lateral stress ratio nu/(1-nu) within 5 %" "abs(r - 1) <= 0.05" r="$ratio"
+seededPoints "$c" "geostatic 3D: "
 finish

@@ -17,7 +17,7 @@
 #     80- and 160-cell drops equals Ergun x L within 0.5 %. A wrong drag
 #     normalisation or a missing aF in the pressure Laplacian shifts the
 #     limit, not just the edge.
-#  4. Solid mass conserved, fluid continuity at solver tolerance, the fluid
+#  4. The seeded points in every written cloud (count, ids, mass), fluid continuity at solver tolerance, the fluid
 #     fraction never below 1 - alphaMax (as shipped).
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"

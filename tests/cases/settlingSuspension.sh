@@ -16,7 +16,8 @@
 #     standard error of the fitted slope; 5 % is 0.4 % + ~3 standard errors.
 #     A missing return flow (fluid at rest) would give 1/alphaF = 1.18; a
 #     lost buoyancy or a wrong voidage exponent is > 10 % off.
-#  2. Solid mass conserved to 1e-12 (relative, first vs last write).
+#  2. Every written cloud holds the seeded points: count, ids and each
+#     point's mass as mpmSetParticles seeded and logged them.
 #  3. alpha.solid seen by the fluid <= alphaMax: min alpha.fluid >= 1 - 0.63.
 #  4. Fluid continuity error (solver's global sum) <= 1e-10 at every step.
 #  5. The same with virtualMass added to the forces (Cvm 0.5, the fluid

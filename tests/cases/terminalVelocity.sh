@@ -176,7 +176,7 @@ regions
     fine      { %s }
     coarse    { %s }
     mixFine   { %s }
-    mixCoarse { %s }
+    mixCoarse { %s overlap add; }
 }
 """ % (box % (0.08, 0.09, "fine", 1e-4), box % (0.05, 0.06, "coarse", 1e-4),
        box % (0.02, 0.03, "fine", 5e-5), box % (0.02, 0.03, "coarse", 5e-5)))

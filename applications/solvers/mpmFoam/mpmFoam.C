@@ -31,8 +31,18 @@ int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "Material Point Method solver (solid and granular material),"
-        " optionally coupled to a volume-averaged fluid"
+        "Material Point Method solver for solids and granular material"
+        " (elastic, neo-Hookean, Drucker-Prager, dilute grains), the mesh"
+        " being the background lattice; with constant/transportProperties,"
+        " 0/U and 0/p the grains are coupled to a volume-averaged"
+        " incompressible fluid solved with PIMPLE (drag, pressure gradient,"
+        " buoyancy).\n"
+        "Reads constant/mpmProperties and the points seeded by"
+        " mpmSetParticles (system/mpmSetParticlesDict).\n"
+        "Annotated example case files: $MPMFOAM_DIR/etc/caseDicts"
+        " (mpmProperties, mpmSetParticlesDict, fvSchemes, fvSolution,"
+        " decomposeParDict); example cases: $MPMFOAM_DIR/tutorials;"
+        " documentation: $MPMFOAM_DIR/README.md and docs/."
     );
     #include "setRootCase.H"
     #include "createTime.H"

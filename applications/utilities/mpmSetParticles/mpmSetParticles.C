@@ -8,6 +8,10 @@ Description
     number of points per cell and direction, with a material, an initial
     velocity (uniform or sinusoidal) and an initial stress. Writes the
     lagrangian cloud materialPoints at the start time, replacing any there.
+
+    A time that holds a run's results (a time after controlDict's startTime,
+    or one with the lattice fields mpmFoam writes) is not overwritten unless
+    -overwrite is given: seeding there would throw the run away.
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -17,14 +21,47 @@ Description
 #include "materialPointsIO.H"
 #include "cloud.H"
 #include "knownKeywords.H"
+#include "completeTimes.H"
 
 int main(int argc, char *argv[])
 {
     argList::addNote("Seed material points for mpmFoam");
     argList::addOption("dict", "file", "Alternative mpmSetParticlesDict");
+    argList::addBoolOption
+    (
+        "overwrite",
+        "Replace the material points of a time that holds a run's results"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
+
+    // startFrom latestTime (as the tutorials) selects a run's last time:
+    // refuse to replace its points, unless asked to
+    {
+        std::string results;
+        for (const word f : {"alpha.solid", "U.solid"})
+        {
+            if (isFile(runTime.timePath()/f)) results += (results.empty() ? "" : " ") + f;
+        }
+        const scalar startTime =
+            runTime.controlDict().getOrDefault<scalar>("startTime", 0);
+        const bool later = runTime.value() > startTime + 0.5*runTime.deltaTValue();
+        if ((later || !results.empty()) && !args.found("overwrite"))
+        {
+            FatalErrorInFunction
+                << "Time " << runTime.timeName() << " holds the results of a"
+                << " run (" << (later ? "after controlDict startTime " : "")
+                << (later ? Foam::name(startTime) : word::null)
+                << (later && !results.empty() ? "; " : "")
+                << (results.empty() ? "" : "mpmFoam fields ")
+                << results.c_str() << "): seeding would replace its material points."
+                << nl << "To seed the start time, remove the later times"
+                << " (foamListTimes -rm) or set startFrom startTime; to"
+                << " replace this time's points, run mpmSetParticles"
+                << " -overwrite." << exit(FatalError);
+        }
+    }
 
     const word dictName("mpmSetParticlesDict");
     #include "setSystemMeshDictionaryIO.H"
@@ -62,7 +99,8 @@ int main(int argc, char *argv[])
     Info<< nl << "Writing " << n << " material points (total mass " << mass
         << ") to " << runTime.timeName()/cloud::prefix/materialPointsCloudName
         << nl << endl;
-    writeMaterialPoints(mesh, lattice, points);
+    writeMaterialPoints(mesh, lattice, points, materials.names());
+    markTimeComplete(runTime);
 
     Info<< "End\n" << endl;
     return 0;

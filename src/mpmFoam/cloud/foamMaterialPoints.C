@@ -10,10 +10,10 @@ namespace Foam
 
 void Foam::foamMaterialPoints::read(mpm::Particles& points)
 {
-    readMaterialPoints(mesh_, points);
+    readMaterialPoints(mesh_, points, materialNames_);
 }
 
 void Foam::foamMaterialPoints::write(const mpm::Particles& points)
 {
-    writeMaterialPoints(mesh_, lattice_, points);
+    writeMaterialPoints(mesh_, lattice_, points, materialNames_);
 }

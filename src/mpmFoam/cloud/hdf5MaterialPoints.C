@@ -305,7 +305,7 @@ void Foam::hdf5MaterialPoints::read(mpm::Particles& P)
         // The points seeded by mpmSetParticles (or a run switched to hdf5)
         Info<< "No HDF5 checkpoint at time " << runTime.timeName()
             << ": reading the lagrangian cloud" << nl;
-        readMaterialPoints(mesh_, P);
+        readMaterialPoints(mesh_, P, materialNames_);
         return;
     }
 

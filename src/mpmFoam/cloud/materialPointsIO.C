@@ -3,6 +3,8 @@
 #include "IOField.H"
 #include "symmTensor.H"
 #include "tensor.H"
+#include "IOdictionary.H"
+#include "ListOps.H"
 
 const Foam::word Foam::materialPointsCloudName("materialPoints");
 
@@ -74,7 +76,9 @@ struct Reader
         {
             FatalErrorInFunction
                 << "Material-point field " << name << " is missing in "
-                << io.path() << nl << "Re-seed with mpmSetParticles."
+                << io.path() << nl << "If a run wrote this time, delete "
+                << "it and restart from an earlier one; if it is the seeded "
+                << "time, seed again with mpmSetParticles."
                 << exit(FatalError);
         }
         IOField<Type> f(io);
@@ -109,13 +113,73 @@ struct Reader
     }
 };
 
+// The material name table of a time's cloud
+IOobject materialTableIO(const Time& runTime, IOobject::readOption r)
+{
+    return IOobject
+    (
+        "mpmMaterials", runTime.timeName(), "uniform", runTime, r,
+        IOobject::NO_WRITE, false
+    );
+}
+
+void writeMaterialTable(const Time& runTime, const wordList& names)
+{
+    IOdictionary table(materialTableIO(runTime, IOobject::NO_READ));
+    table.note() = "the materials that the cloud's material index refers to";
+    table.add("materials", names);
+    table.regIOobject::write();
+}
+
+// cloud index -> index in `current`, from the table of the time; FatalIOError
+// for a name `current` lacks, a warning when there is no table
+labelList materialMap(const Time& runTime, const wordList& current)
+{
+    IOobject io(materialTableIO(runTime, IOobject::MUST_READ));
+    if (!io.typeHeaderOk<IOdictionary>(true))
+    {
+        WarningInFunction
+            << "No material name table " << runTime.timeName()/"uniform"
+            /"mpmMaterials" << " (a cloud written before it existed): "
+            << "assuming its material indices follow the current order of "
+            << "constant/mpmProperties materials " << current << nl
+            << "If materials were inserted or reordered since seeding, the "
+            << "points now have another law: re-order mpmProperties." << endl;
+        return identity(current.size());
+    }
+    const IOdictionary table(io);
+    const wordList written(table.get<wordList>("materials"));
+    labelList map(written.size());
+    forAll(written, i)
+    {
+        map[i] = current.find(written[i]);
+        if (map[i] < 0)
+        {
+            FatalIOErrorInFunction(table)
+                << "The material points of time " << runTime.timeName()
+                << " include material '" << written[i] << "', which "
+                << "constant/mpmProperties materials does not define "
+                << current << nl << "Add it back (or rename it there to '"
+                << written[i] << "'): a point keeps its material by name."
+                << exit(FatalIOError);
+        }
+    }
+    if (map != identity(current.size()))
+    {
+        Info<< "Material points: materials mapped by name from the cloud's "
+            << "table " << written << " to mpmProperties " << current << nl;
+    }
+    return map;
+}
+
 } // namespace
 
 void Foam::writeMaterialPoints
 (
     const fvMesh& mesh,
     const meshLattice& ml,
-    const mpm::Particles& points
+    const mpm::Particles& points,
+    const wordList& materialNames
 )
 {
     passiveParticleCloud cloud(mesh, materialPointsCloudName, IDLList<passiveParticle>());
@@ -153,9 +217,15 @@ void Foam::writeMaterialPoints
     IOField<label> id(cloud.fieldIOobject("pointId", IOobject::NO_READ), n);
     forAll(id, i) id[i] = label(points.id[i]);
     id.write(n > 0);
+    writeMaterialTable(mesh.time(), materialNames);
 }
 
-void Foam::readMaterialPoints(const fvMesh& mesh, mpm::Particles& points)
+void Foam::readMaterialPoints
+(
+    const fvMesh& mesh,
+    mpm::Particles& points,
+    const wordList& materialNames
+)
 {
     (void)mesh.tetBasePtIs();     // collective: before any rank needs it
     passiveParticleCloud cloud(mesh, materialPointsCloudName);
@@ -168,6 +238,11 @@ void Foam::readMaterialPoints(const fvMesh& mesh, mpm::Particles& points)
             << "Seed them with mpmSetParticles (system/mpmSetParticlesDict)."
             << exit(FatalError);
     }
+    // Collective (the table is read by every rank), before any returns
+    const labelList map
+    (
+        materialNames.empty() ? labelList() : materialMap(mesh.time(), materialNames)
+    );
     points.resize(n);
     if (n == 0) return;     // a decomposed rank may have none
     label i = 0;
@@ -181,5 +256,19 @@ void Foam::readMaterialPoints(const fvMesh& mesh, mpm::Particles& points)
     forEachField(points, reader);
     const IOField<label> mat(reader.read<label>("material"));
     const IOField<label> id(reader.read<label>("pointId"));
-    forAll(mat, j) { points.material[j] = mat[j]; points.id[j] = id[j]; }
+    forAll(mat, j)
+    {
+        points.id[j] = id[j];
+        points.material[j] = mat[j];
+        if (map.empty()) continue;
+        if (mat[j] < 0 || mat[j] >= map.size())
+        {
+            FatalErrorInFunction
+                << "Material point " << id[j] << " has material index "
+                << mat[j] << ", but the cloud's material table "
+                << mesh.time().timeName()/"uniform"/"mpmMaterials" << " has "
+                << map.size() << " materials" << exit(FatalError);
+        }
+        points.material[j] = map[mat[j]];
+    }
 }

@@ -1,4 +1,58 @@
 #include "choice.H"
+#include <cmath>
+
+bool Foam::numberRange::contains(scalar v) const
+{
+    return std::isfinite(v)
+        && (minIncluded ? v >= min : v > min)
+        && (maxIncluded ? v <= max : v < max);
+}
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const numberRange& r)
+{
+    // GREAT and labelMax stand for "no upper limit"
+    os  << (r.minIncluded ? "[" : "(") << r.min << ", ";
+    if (r.max >= GREAT) os << "inf)";
+    else os << r.max << (r.maxIncluded ? "]" : ")");
+    return os;
+}
+
+void Foam::checkInRange
+(
+    const dictionary& dict,
+    const word& keyword,
+    scalar v,
+    const numberRange& range,
+    const std::string& what
+)
+{
+    if (!range.contains(v))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << keyword << " = " << v << " is out of range "
+            << range << what.c_str()
+            << exit(FatalIOError);
+    }
+}
+
+Foam::scalar Foam::readBounded
+(
+    const dictionary& dict,
+    const word& keyword,
+    scalar deflt,
+    const numberRange& range,
+    bool echo
+)
+{
+    const bool given = dict.found(keyword);
+    const scalar v = given ? dict.get<scalar>(keyword) : deflt;
+    checkInRange(dict, keyword, v, range);
+    if (echo)
+    {
+        Info<< "    " << keyword << " " << v << (given ? "" : " (default)") << nl;
+    }
+    return v;
+}
 
 Foam::scalar Foam::readBounded
 (
@@ -10,18 +64,5 @@ Foam::scalar Foam::readBounded
     bool echo
 )
 {
-    const bool given = dict.found(keyword);
-    const scalar v = given ? dict.get<scalar>(keyword) : deflt;
-    if (!std::isfinite(v) || v < minValue || v > maxValue)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << keyword << " = " << v << " is out of range ["
-            << minValue << ", " << maxValue << "]"
-            << exit(FatalIOError);
-    }
-    if (echo)
-    {
-        Info<< "    " << keyword << " " << v << (given ? "" : " (default)") << nl;
-    }
-    return v;
+    return readBounded(dict, keyword, deflt, numberRange{minValue, maxValue}, echo);
 }

@@ -5,6 +5,15 @@
 #include "Time.H"
 #include "step/mpmSystem.hpp"
 
+void Foam::checkStep(const Time& runTime, const std::string& what)
+{
+    checkInRange
+    (
+        runTime.controlDict(), "deltaT", runTime.deltaTValue(),
+        numberRange{0, GREAT, false}, (" (" + what + ")").c_str()
+    );
+}
+
 Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
 {
     // The top level of mpmProperties: these controls, the sub-dictionaries
@@ -76,6 +85,12 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
     {
         courant = readBounded(ts, "courant", 0.5, SMALL, 10);
         maxDeltaT = readBounded(ts, "maxDeltaT", GREAT, SMALL, GREAT);
+    }
+    else
+    {
+        // The fixed step is controlDict's deltaT: zero would never advance
+        // the time (a hang, or a division by zero in the write control)
+        checkStep(mesh.time(), "the fixed MPM step, timeStep { type fixed; }");
     }
 
     IOobject gIO("g", mesh.time().constant(), mesh, IOobject::READ_IF_PRESENT, IOobject::NO_WRITE);

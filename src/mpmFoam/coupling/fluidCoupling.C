@@ -3,6 +3,8 @@
 #include "knownKeywords.H"
 #include "uniformDimensionedFields.H"
 #include "Tuple2.H"
+#include "floatingPointTraps.H"
+#include <cmath>
 
 namespace
 {
@@ -66,7 +68,9 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         }
     }
     Info<< "    forces " << forces << " (others are not computed)" << nl;
-    alphaMax_ = readBounded(d, "alphaMax", 0.63, SMALL, 1);
+    // Below 1: the fluid keeps a share of every cell (alpha.fluid >= 1 -
+    // alphaMax divides the pressure equation and the drag)
+    alphaMax_ = readBounded(d, "alphaMax", 0.63, numberRange{0, 1, false, false});
     const entry* sc = d.findEntry("subCycles", keyType::LITERAL);
     if (sc && !(sc->stream()[0].isWord() && sc->stream()[0].wordToken() == "auto"))
     {
@@ -211,6 +215,10 @@ void Foam::fluidCoupling::updateBeta()
     const volScalarField mu(fluid_.mu());
     volScalarField& beta = fluid_.beta();
     if (!singleDragLaw_) s.materialGrainVolume(materialVolume_);
+    // The traps are held off: an extreme but in-range parameter (a grain
+    // diameter of 1e-200 m) overflows here, and is reported below, with
+    // what to check, rather than as a SIGFPE
+    const floatingPointTrapsOff noTraps;
     forAll(node, celli)
     {
         const label I = node[celli];
@@ -233,6 +241,29 @@ void Foam::fluidCoupling::updateBeta()
                 beta[celli] += share*dragLaws_[m]->beta(1 - alphaS, slip, rhoF, mu[celli]);
             }
         }
+    }
+    label bad = -1;
+    forAll(beta, celli)
+    {
+        if (!std::isfinite(beta[celli])) { bad = celli; break; }
+    }
+    if (returnReduce(bad >= 0, orOp<bool>()))
+    {
+        FatalErrorInFunction
+            << "Stopping at time " << mesh_.time().timeName() << ": the drag"
+            << " coefficient beta is not finite";
+        if (bad >= 0)
+        {
+            FatalError
+                << " in cell " << bad << " at " << mesh_.C()[bad]
+                << " (alpha.solid " << cappedAlphaSolid(bad) << ")";
+        }
+        FatalError
+            << "." << nl << "A drag parameter (the grain diameter d, in the "
+            << "drag sub-dictionaries of constant/mpmProperties materials) or "
+            << "the fluid's nu and rho (constant/transportProperties) give an "
+            << "overflow: check their values and units (d in m)."
+            << exit(FatalError);
     }
 }
 

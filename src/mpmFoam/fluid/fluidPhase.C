@@ -3,6 +3,7 @@
 #include "constrainPressure.H"
 #include "adjustPhi.H"
 #include "syncTools.H"
+#include "choice.H"
 
 bool Foam::fluidPhase::present(const fvMesh& mesh)
 {
@@ -84,12 +85,16 @@ Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
     transport_(U_, phi_),
     rho_("rho", dimDensity, transport_)
 {
-    if (rho_.value() <= 0)
-    {
-        FatalIOErrorInFunction(transport_)
-            << "Fluid density rho must be > 0 (constant/transportProperties)"
-            << exit(FatalIOError);
-    }
+    // Checked here, before the first solve: a non-positive density or
+    // viscosity makes the momentum matrix lose its diagonal dominance and
+    // the run ends in a floating-point exception (the traps stay on for the
+    // fluid). Non-Newtonian models: their smallest viscosity.
+    checkInRange(transport_, "rho", rho_.value(), numberRange{0, GREAT, false});
+    checkInRange
+    (
+        transport_, "nu", gMin(transport_.nu()().primitiveField()),
+        numberRange{0, GREAT, false}, " (kinematic viscosity [m^2/s])"
+    );
     alpha_.oldTime();   // keep the old fluid fraction for d(alphaF)/dt
     turbulence_ = turbulenceModel::New(alpha_, U_, alphaPhi_, phi_, transport_);
     setRefCell(p_, pimple.dict(), pRefCell_, pRefValue_);

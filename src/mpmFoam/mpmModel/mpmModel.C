@@ -3,8 +3,11 @@
 #include "Time.H"
 #include "clockTime.H"
 #include "floatingPointTraps.H"
+#include "compressionCheck.H"
+#include "completeTimes.H"
 #include <omp.h>
 #include <cstring>
+#include <regex>
 
 Foam::mpmModel::mpmModel(const fvMesh& mesh)
 :
@@ -30,6 +33,9 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
         mesh, dimensionedVector(dimVelocity, Zero)
     )
 {
+    // Before anything of the start time is read: a half-written time would
+    // fail with a parse error, or give points whose fields disagree
+    checkTimeComplete(mesh.time());
     lattice_.report(Info);
     suspendPoolThreadTraps();
     const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_));
@@ -205,9 +211,20 @@ void Foam::mpmModel::evolve(scalar dt)
     }
     catch (const mpm::NonFiniteError& e)
     {
+        // The core knows a material by its index: name it
+        std::string what(e.what());
+        std::smatch m;
+        if (std::regex_search(what, m, std::regex("\\(material ([0-9]+)\\)")))
+        {
+            const label k = std::stoi(m[1].str());
+            if (k < materials_.size())
+            {
+                what = m.prefix().str() + "(material " + materials_.names()[k] + ")" + m.suffix().str();
+            }
+        }
         FatalErrorInFunction
             << "Stopping at time " << mesh_.time().timeName() << ": "
-            << e.what() << nl
+            << what.c_str() << nl
             << "Nothing was written for this time. Reduce the time step "
             << "(timeStep courant) or check the material coefficients."
             << exit(FatalError);
@@ -220,6 +237,7 @@ void Foam::mpmModel::evolve(scalar dt)
             << e.what() << nl << "Nothing was written for this time."
             << exit(FatalError);
     }
+    stopIfInverted(system_.particles(), materials_.names(), label(system_.stepCount()), mesh_.time());
     ++steps_;
 }
 

@@ -5,6 +5,7 @@
 #include "symmTensor.H"
 #include "choice.H"
 #include "knownKeywords.H"
+#include "Tuple2.H"
 #include <algorithm>
 
 namespace
@@ -30,7 +31,7 @@ void checkRegionKeywords(const dictionary& d, const word& name, const word& geom
     wordList keys
     {
         "type", "material", "pointsPerCell", "offset", "velocity", "stress",
-        "solidFraction", "file"
+        "solidFraction", "file", "overlap"
     };
     if (geometry == "searchableBox") keys.append(wordList{"min", "max"});
     else if (geometry == "searchableCylinder") keys.append(wordList{"point1", "point2", "radius"});
@@ -114,6 +115,95 @@ public:
     }
 };
 
+// Overlapping regions: the later region wins. Removes the points of earlier
+// regions (indices from `first` on) that lie inside `surf`, keeping the
+// order of the others (and of regionOf, each point's region). Returns the
+// global count and mass removed.
+Tuple2<label, scalar> removeInside
+(
+    const searchableSurface& surf,
+    mpm::Particles& points,
+    const label first,
+    std::vector<label>& regionOf
+)
+{
+    const label n = points.size();
+    pointField x(n - first);
+    forAll(x, i)
+    {
+        const label p = first + i;
+        x[i] = point(points.x[0][p], points.x[1][p], points.x[2][p]);
+    }
+    List<volumeType> inside;
+    surf.getVolumeType(x, inside);
+    std::vector<mpm::Index> order, removed;
+    for (label p = 0; p < n; ++p)
+    {
+        if (p >= first && inside[p - first] == volumeType::INSIDE) removed.push_back(p);
+        else order.push_back(p);
+    }
+    scalar mass = 0;
+    for (const mpm::Index p : removed) mass += points.mass[p];
+    if (!removed.empty())
+    {
+        const label kept = label(order.size());
+        order.insert(order.end(), removed.begin(), removed.end());
+        points.permute(order);
+        points.resize(kept);
+        std::vector<label> r(kept);
+        for (label i = 0; i < kept; ++i) r[i] = regionOf[order[i]];
+        regionOf.swap(r);
+    }
+    return Tuple2<label, scalar>
+    (
+        returnReduce(label(removed.size()), sumOp<label>()),
+        returnReduce(mass, sumOp<scalar>())
+    );
+}
+
+// Count and mass of the points of each region and each material (global)
+void reportTotals
+(
+    const mpm::Particles& points,
+    const label first,
+    const std::vector<label>& regionOf,
+    const wordList& regionNames,
+    const wordList& materialNames
+)
+{
+    scalarField regionMass(regionNames.size(), 0), materialMass(materialNames.size(), 0);
+    labelList regionCount(regionNames.size(), 0), materialCount(materialNames.size(), 0);
+    for (label p = first; p < points.size(); ++p)
+    {
+        const label r = regionOf[p], m = points.material[p];
+        regionMass[r] += points.mass[p]; ++regionCount[r];
+        materialMass[m] += points.mass[p]; ++materialCount[m];
+    }
+    for (auto* f : {&regionMass, &materialMass})
+    {
+        Pstream::listCombineGather(*f, plusEqOp<scalar>());
+        Pstream::listCombineScatter(*f);
+    }
+    for (auto* f : {&regionCount, &materialCount})
+    {
+        Pstream::listCombineGather(*f, plusEqOp<label>());
+        Pstream::listCombineScatter(*f);
+    }
+    Info<< nl << "Seeded (after overlaps: a later region replaces the earlier"
+        << " ones where they overlap):" << nl;
+    forAll(regionNames, r)
+    {
+        Info<< "    region " << regionNames[r] << ": " << regionCount[r]
+            << " points, mass " << regionMass[r] << nl;
+    }
+    forAll(materialNames, m)
+    {
+        if (materialCount[m] == 0) continue;
+        Info<< "    material " << materialNames[m] << ": " << materialCount[m]
+            << " points, mass " << materialMass[m] << nl;
+    }
+}
+
 } // namespace
 
 Foam::label Foam::seedRegions
@@ -130,11 +220,15 @@ Foam::label Foam::seedRegions
     label idBase = returnReduce(n0, sumOp<label>());
 
     checkAllSubDicts(regions, "regions (one sub-dictionary per region)");
+    std::vector<label> regionOf(n0, -1);    // each point's region
+    wordList regionNames;
     for (const entry& e : regions)
     {
         if (!e.isDict()) continue;
         const dictionary& d = e.dict();
         const word name(e.keyword());
+        const label regioni = regionNames.size();
+        regionNames.append(name);
         Info<< "Region " << name << nl;
 
         dictionary geomDict(d);
@@ -164,6 +258,29 @@ Foam::label Foam::seedRegions
                     << "Shrink the region or enlarge the mesh."
                     << exit(FatalIOError);
             }
+        }
+
+        // The later region wins: the points of earlier regions inside this
+        // one go (seeding both would double the mass in the overlap), unless
+        // it says `overlap add` (a mixture: each region its solidFraction).
+        const word overlap(d.getOrDefault<word>("overlap", "replace"));
+        if (overlap != "replace" && overlap != "add")
+        {
+            FatalIOErrorInFunction(d)
+                << "Unknown overlap '" << overlap << "'" << nl
+                << "Valid overlap choices: replace add" << exit(FatalIOError);
+        }
+        const Tuple2<label, scalar> replaced
+        (
+            overlap == "add" ? Tuple2<label, scalar>(0, 0)
+          : removeInside(surf(), points, n0, regionOf)
+        );
+        if (overlap == "add") Info<< "    overlap add: earlier points kept" << nl;
+        if (replaced.first())
+        {
+            Info<< "    replaces " << replaced.first() << " points (mass "
+                << replaced.second() << ") of earlier regions where they "
+                << "overlap" << nl;
         }
 
         const label mat = materials.index(d.get<word>("material"), d);
@@ -286,6 +403,7 @@ Foam::label Foam::seedRegions
                     rho*solidFraction*pointVol, pointVol, int(mat)
                 );
                 points.id[p] = id;
+                regionOf.push_back(regioni);
                 points.sigma[mpm::XX][p] = sigma0.xx();
                 points.sigma[mpm::YY][p] = sigma0.yy();
                 points.sigma[mpm::ZZ][p] = sigma0.zz();
@@ -302,5 +420,6 @@ Foam::label Foam::seedRegions
             WarningInFunction << "Region " << name << " contains no points" << nl;
         }
     }
+    reportTotals(points, n0, regionOf, regionNames, materials.names());
     return points.size() - n0;
 }

@@ -2,6 +2,9 @@
 #include "addToRunTimeSelectionTable.H"
 #include "clockTime.H"
 #include "choice.H"
+#include "mpmControls.H"
+#include "completeTimes.H"
+#include <cmath>
 
 namespace Foam
 {
@@ -22,6 +25,7 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
         fluid_.reset(new fluidPhase(mesh, pimple_()));
         coupling_.reset(new fluidCoupling(mesh, mpm_, fluid_()));
 
+        checkStep(runTime, "the fluid step; the grains sub-cycle within it");
         const dictionary& cd = runTime.controlDict();
         adjustFluidStep_ = cd.getOrDefault<bool>("adjustTimeStep", false);
         Info<< "Fluid time step: " << (adjustFluidStep_ ? "adjustable" : "fixed")
@@ -33,6 +37,19 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
         }
         Info<< endl;
     }
+    wallClock_ = clockTime();   // the time loop starts here
+}
+
+void Foam::mpmFoamModule::printProgress() const
+{
+    const scalar t0 = runTime.startTime().value();
+    const scalar t1 = runTime.endTime().value();
+    const scalar done = min(max((runTime.value() - t0)/max(t1 - t0, VSMALL), 0), 1);
+    const scalar wall = wallClock_.elapsedTime();
+    Info<< "Progress: time " << runTime.timeName() << " of " << t1 << ", "
+        << std::round(1000*done)/10 << " % done, wall time "
+        << std::round(10*wall)/10 << " s, about "
+        << std::round(done > 0 ? 10*wall*(1 - done)/done : 0)/10 << " s left" << nl;
 }
 
 Foam::scalar Foam::mpmFoamModule::maxDeltaT() const
@@ -65,8 +82,13 @@ void Foam::mpmFoamModule::prePredictor()
         return;
     }
 
-    // Coupled: the solids first, over the whole fluid step (explicit
-    // coupling: the fluid then sees their new fraction and velocity).
+    // Coupled: every logInterval fluid steps (and at write times) the
+    // step's lines; the others are held back until postWrite
+    logStep_ = fluidSteps_++ % mpm_.controls().logInterval == 0 || runTime.writeTime();
+    if (!logStep_) held_.reset(new heldLog);
+
+    // The solids first, over the whole fluid step (explicit coupling: the
+    // fluid then sees their new fraction and velocity).
     // The fluid Courant number of this step, from the last flux.
     const scalar Co = fluid_->courantNumber(dt);
     Info<< "fluid: Courant Number max " << Co << " deltaT = " << dt << nl
@@ -118,11 +140,16 @@ void Foam::mpmFoamModule::postSolve()
 
 void Foam::mpmFoamModule::postWrite()
 {
+    // After runTime.write(): every field of this time is on disk
+    if (runTime.writeTime()) markTimeComplete(runTime);
+
     if (coupled() || logStep_ || runTime.writeTime())
     {
-        mpm_.report(Info);
+        mpm_.report(Info);   // held back too: its summary file is per step
+        printProgress();
         runTime.printExecutionTime(Info);
     }
+    held_.reset();
 }
 
 void Foam::mpmFoamModule::end()

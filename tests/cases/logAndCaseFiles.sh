@@ -1,0 +1,55 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# The log and the annotated case files:
+#  - coupled, logInterval 5: the fluid's lines (Courant number, PIMPLE, the
+#    linear solves, continuity) every 5th fluid step only, with a progress
+#    line (simulated time, % done, wall time left); logInterval 1 logs them
+#    all;
+#  - the annotated minimal etc/caseDicts/{mpm,coupled}/{fvSchemes,fvSolution}
+#    run a pure MPM and a coupled tutorial in place of theirs;
+#  - mpmFoam -help says what it does and where the annotated files are.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+
+c=$(copyTutorial multiphase/packedBed packedBed)
+(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) || { echo "FAIL: set-up"; exit 1; }
+# 20 fluid steps, no write time inside; the annotated coupled files
+sed -i 's/^endTime .*/endTime 0.4;/' "$c/system/controlDict"
+cp "$MPMFOAM_ROOT/etc/caseDicts/coupled/fvSchemes" "$MPMFOAM_ROOT/etc/caseDicts/coupled/fvSolution" "$c/system/"
+d=$(cp -r "$c" "$SCRATCH/packedBedEvery" && echo "$SCRATCH/packedBedEvery")
+sed -i 's/^logInterval .*/logInterval 5;/' "$(props "$c")"
+
+runIn "$c" mpmFoam > "$c/log.mpmFoam" 2>&1 || { echo "FAIL: coupled run with etc/caseDicts/coupled files"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); }
+runIn "$d" mpmFoam > "$d/log.mpmFoam" 2>&1 || { echo "FAIL: coupled run, logInterval 1"; failures=$((failures + 1)); }
+count() { grep -c "$1" "$2/log.mpmFoam"; }
+check "coupled, logInterval 5: the fluid step header on 4 of 20 steps" "n == 4" n="$(count "^fluid: Courant Number" "$c")"
+check "coupled, logInterval 5: pressure solves and continuity on those steps only" "p == 4*3 and e == 4" \
+    p="$(count "Solving for p" "$c")" e="$(count "^fluid: continuity error" "$c")"
+check "coupled, logInterval 1: every step logged" "n == 20" n="$(count "^fluid: Courant Number" "$d")"
+check "coupled, logInterval 5: the per-step MPM summary still has every step" "a == b" \
+    a="$(grep -vc "^#" "$c"/postProcessing/mpmSummary/0/summary.dat)" b="$(grep -vc "^#" "$d"/postProcessing/mpmSummary/0/summary.dat)"
+prog=$(grep -m1 "^Progress: time 0.02 of 0.4, 5 % done, wall time [0-9.e-]+ s, about [0-9.e-]+ s left" -E "$c/log.mpmFoam")
+last=$(grep "^Progress:" "$c/log.mpmFoam" | tail -1)
+if [ -n "$prog" ] && [ "$(count "^Progress:" "$c")" -eq 4 ]; then
+    echo "PASS: a progress line every logInterval: $prog ... $last"
+else
+    echo "FAIL: no progress line every logInterval"; grep "^Progress" "$c/log.mpmFoam"; failures=$((failures + 1))
+fi
+
+p=$(copyTutorial mpm/axialBar axialBar)
+cp "$MPMFOAM_ROOT/etc/caseDicts/mpm/fvSchemes" "$MPMFOAM_ROOT/etc/caseDicts/mpm/fvSolution" "$p/system/"
+sed -i 's/^endTime .*/endTime 5;/' "$p/system/controlDict"
+if (cd "$p" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+    && grep -q "^Progress: time 5 of 5, 100 % done" "$p/log.mpmFoam"; then
+    echo "PASS: pure MPM runs with etc/caseDicts/mpm/fvSchemes and fvSolution, and logs its progress"
+else
+    echo "FAIL: pure MPM with etc/caseDicts/mpm files"; tail -10 "$p/log.mpmFoam"; failures=$((failures + 1))
+fi
+
+help=$(mpmFoam -help 2>&1)
+if echo "$help" | grep -q "Material Point Method solver" && echo "$help" | tr '\n' ' ' | grep -q "Annotated example case files: \$MPMFOAM_DIR/etc/caseDicts"; then
+    echo "PASS: mpmFoam -help says what it does and where the annotated files are"
+else
+    echo "FAIL: mpmFoam -help"; echo "$help" | tail -12; failures=$((failures + 1))
+fi
+finish
