@@ -8,7 +8,9 @@
 #include "OStringStream.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 namespace Foam
 {
@@ -196,21 +198,43 @@ void Foam::hdf5MaterialPoints::write(const mpm::Particles& P)
         h5.attribute(lattice, "cells", cells);
         const std::vector<std::uint64_t> dims
             {std::uint64_t(cells[2]), std::uint64_t(cells[1]), std::uint64_t(cells[0])};
-        std::vector<std::uint64_t> cellIds(mesh_.nCells());
+        // The master writes each cell field whole: it gathers the ranks'
+        // cells (lattice index, then values), NaN where no mesh cell is.
+        // Element-wise collective writes of scattered cells took longer
+        // than the points (MPI-IO datatypes of one element each).
+        const std::size_t nLattice = std::size_t(cells[0]*cells[1]*cells[2]);
+        labelList cellIds(mesh_.nCells());
         forAll(lattice_.cellIndices(), celli)
         {
             const auto& r = lattice_.cellIndices()[celli];
-            cellIds[celli] = L.cellIndex(r[0], r[1], r[2]);
+            cellIds[celli] = label(L.cellIndex(r[0], r[1], r[2]));
         }
+        List<labelList> allIds(Pstream::nProcs());
+        allIds[Pstream::myProcNo()] = cellIds;
+        Pstream::gatherList(allIds);
         std::vector<std::string> cellNames;
         std::vector<std::int64_t> cellComps;
         auto writeCellField = [&](const auto& fld, int cols)
         {
-            std::vector<double> v(std::size_t(mesh_.nCells())*cols);
-            const scalar* data = reinterpret_cast<const scalar*>(fld.primitiveField().cdata());
-            std::copy(data, data + v.size(), v.begin());
+            using Type = typename std::decay<decltype(fld.primitiveField())>::type;
+            List<Type> allValues(Pstream::nProcs());
+            allValues[Pstream::myProcNo()] = fld.primitiveField();
+            Pstream::gatherList(allValues);
+            std::vector<double> v;
+            if (Pstream::master())
+            {
+                v.assign(nLattice*cols, std::numeric_limits<double>::quiet_NaN());
+                forAll(allIds, proc)
+                {
+                    forAll(allIds[proc], i)
+                    {
+                        const scalar* x = reinterpret_cast<const scalar*>(&allValues[proc][i]);
+                        std::copy(x, x + cols, v.begin() + std::size_t(allIds[proc][i])*cols);
+                    }
+                }
+            }
             const std::string name = lattice + std::string(fld.name());
-            h5.writeCells(name, dims, cols > 1 ? cols : 0, cellIds, v);
+            h5.writeArray(name, dims, cols > 1 ? cols : 0, Pstream::master(), v);
             h5.attribute(name, "dimensions", dimensionsText(fld.dimensions()));
             cellNames.push_back(fld.name());
             cellComps.push_back(cols);

@@ -1,8 +1,6 @@
 #include "hdf5File.H"
 #include <mpi.h>
 #include <hdf5.h>
-#include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace
@@ -190,55 +188,29 @@ bool Foam::hdf5File::integer(const std::string& name, int& bytes) const
     return H5Tget_class(type) == H5T_INTEGER;
 }
 
-void Foam::hdf5File::writeCells
+void Foam::hdf5File::writeArray
 (
     const std::string& name, const std::vector<std::uint64_t>& dims,
-    int comps, const std::vector<std::uint64_t>& cells,
-    const std::vector<double>& values
+    int comps, bool writer, const std::vector<double>& values
 )
 {
     std::vector<hsize_t> d(dims.begin(), dims.end());
     if (comps > 0) d.push_back(hsize_t(comps));
-    const int rank = int(d.size());
-    handle space(H5Screate_simple(rank, d.data(), nullptr), H5Sclose);
-    handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &nan);
-    H5Pset_alloc_time(dcpl, H5D_ALLOC_TIME_EARLY);
+    handle space(H5Screate_simple(int(d.size()), d.data(), nullptr), H5Sclose);
     handle set
     (
         H5Dcreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space,
-            H5P_DEFAULT, dcpl, H5P_DEFAULT),
+            H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
         H5Dclose
     );
     if (set < 0) fail("cannot create dataset " + name);
-
-    // Element coordinates, in the order of `values`
-    const std::uint64_t width = comps > 0 ? comps : 1;
-    const std::size_t nElem = cells.size()*width;
-    std::vector<hsize_t> coord(nElem*rank);
-    std::size_t at = 0;
-    for (const std::uint64_t c : cells)
+    handle mem(H5Screate_simple(int(d.size()), d.data(), nullptr), H5Sclose);
+    if (!writer)
     {
-        for (std::uint64_t k = 0; k < width; ++k)
-        {
-            std::uint64_t rest = c;
-            const int nd = int(dims.size());
-            for (int a = nd - 1; a >= 0; --a)
-            {
-                coord[at + a] = rest % dims[a];
-                rest /= dims[a];
-            }
-            if (comps > 0) coord[at + nd] = k;
-            at += rank;
-        }
+        H5Sselect_none(space);
+        H5Sselect_none(mem);
     }
-    if (nElem > 0) H5Sselect_elements(space, H5S_SELECT_SET, nElem, coord.data());
-    else H5Sselect_none(space);
-    const hsize_t memDim = nElem;
-    handle mem(H5Screate_simple(1, &memDim, nullptr), H5Sclose);
-    if (nElem == 0) H5Sselect_none(mem);
-    if (H5Dwrite(set, H5T_NATIVE_DOUBLE, mem, space, xfer_, values.data()) < 0)
+    if (H5Dwrite(set, H5T_NATIVE_DOUBLE, mem, space, xfer_, writer ? values.data() : nullptr) < 0)
     {
         fail("writing dataset " + name + " failed; is the disk full?");
     }
