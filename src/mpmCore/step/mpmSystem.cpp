@@ -704,12 +704,17 @@ void MpmSystem::updateStress(Real dt)
     auto& P = particles_;
     const Index n = P.size();
     Index firstBad = n;
+    // Per material, not per point: a law without deformation (dilute
+    // grains) keeps F = I
+    std::vector<char> deforms(materials_.size());
+    for (std::size_t m = 0; m < materials_.size(); ++m) deforms[m] = materials_[m]->needsDeformation();
     #pragma omp parallel for schedule(static) reduction(min:firstBad) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         const ConstitutiveLaw& law = *materials_[P.material[p]];
+        const bool deform = deforms[P.material[p]];
         Real Lp[9], Fo[9], Fn[9], sig[6];
-        for (int e = 0; e < 9; ++e) { Lp[e] = law.needsDeformation() ? L_[e][p] : 0.0; Fo[e] = P.F[e][p]; }
+        for (int e = 0; e < 9; ++e) { Lp[e] = deform ? L_[e][p] : 0.0; Fo[e] = P.F[e][p]; }
         // F_{n+1} = (I + dt L) F_n
         for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -731,7 +736,7 @@ void MpmSystem::updateStress(Real dt)
         for (int e = 0; e < 9; ++e) P.F[e][p] = Fn[e];
         for (int c = 0; c < 6; ++c) P.sigma[c][p] = sig[c];
         P.eqPlasticStrain[p] = ep;
-        P.volume[p] = P.volume0[p]*P.J(p);
+        P.volume[p] = P.volume0[p]*Jn;
     }
     stopIfNonFinite(firstBad, "stress or deformation");
 }
