@@ -35,4 +35,14 @@ done
 for scheme in USF MUSL; do
     runCheck cubicBSpline 1 "$scheme" 0.6
 done
+# --kh evaluates the given wavenumbers: at kh = pi/4 it must print the |G|
+# of the sampled grid (--nk 4 samples pi/4, pi/2, ...), for a diffusion and
+# a wave setup
+for args in "--model diffusion --shape CBS --alpha 1 --Fo 0.5" "--model wave --shape LH --alpha 0 --CFL 0.6"; do
+    sampled=$("$tool" $args --nk 4 | awk '$2 == "0.250" {print $6; exit}')
+    given=$("$tool" $args --kh 0.7853981633974483 | awk '$2 == "0.250" {print $6; exit}')
+    check "mpmStabilityAnalysis --kh pi/4 gives the sampled |G| ($args)" \
+        "g == s and s > 0" g="${given:-0}" s="${sampled:-0}"
+done
+
 finish

@@ -31,6 +31,7 @@ struct Options
     std::vector<Real> offsets{0.5};
     std::vector<Real> numbers;        // Fo or CFL values
     int khPerZone = 64;               // kh samples per grid zone (0, pi]
+    std::vector<Real> khList;         // --kh: these wavenumbers instead
     std::string csv, limitCsv, sweepCsv;
     bool limit = false;
     int sweepPoints = 0;
@@ -50,6 +51,7 @@ void usage()
 "  --offsets 0.25,0.75           point offsets in each cell, lattice units [0,1)\n"
 "  --Fo 0.1,0.5 | --CFL 0.5,1    parameter values for the G(kh) table/CSV\n"
 "  --nk 64                       kh samples per grid zone (0,pi]\n"
+"  --kh 0.126,0.628              these kh only (instead of --nk), every one printed\n"
 "  --csv file                    write G(kh) for every combination\n"
 "  --limit                       compute the stability limit of every combination\n"
 "  --limit-csv file              write the limits\n"
@@ -128,6 +130,11 @@ Options parse(int argc, char** argv)
         else if (a == "--offsets") o.offsets = realList(next());
         else if (a == "--Fo" || a == "--CFL") o.numbers = realList(next());
         else if (a == "--nk") o.khPerZone = std::stoi(next());
+        else if (a == "--kh")
+        {
+            o.khList = realList(next());
+            for (Real kh : o.khList) if (!(kh > 0)) fail("--kh values must be > 0");
+        }
         else if (a == "--csv") o.csv = next();
         else if (a == "--limit") o.limit = true;
         else if (a == "--limit-csv") { o.limitCsv = next(); o.limit = true; }
@@ -197,10 +204,14 @@ void runModes(const Options& o, const std::vector<AnalysisSetup>& setups)
         std::printf("\n== %s\n", describe(s).c_str());
         std::printf("%6s %8s %3s %12s %12s %10s %10s %11s %7s %8s\n", pname, "kh/pi", "br",
                     "Re G", "Im G", "|G|", "|Gexact|", "phaseErr", "match", "rho(A)");
+        // kh: the --kh list (every value printed), or khPerZone samples
+        // per grid zone (the table prints multiples of pi/4)
+        std::vector<std::pair<Real, bool>> khs;
+        if (!o.khList.empty()) for (Real kh : o.khList) khs.emplace_back(kh, true);
+        else for (int i = 1; i <= o.khPerZone*npc; ++i) khs.emplace_back(pi*i/o.khPerZone, (4*i) % o.khPerZone == 0);
         for (Real num : o.numbers)
-            for (int i = 1; i <= o.khPerZone*npc; ++i)
+            for (const auto& [kh, print] : khs)
             {
-                const Real kh = pi*i/o.khPerZone;
                 for (const ModeResult& r : analyseMode(s, kh, num))
                 {
                     const Real phaseErr = wrapAngle(std::arg(r.G) - std::arg(r.exact));
@@ -211,8 +222,7 @@ void runModes(const Options& o, const std::vector<AnalysisSetup>& setups)
                             << std::abs(r.exact) << ',' << std::abs(r.G) - std::abs(r.exact) << ','
                             << phaseErr << ',' << r.match << ',' << r.spectralRadius << ','
                             << int(r.singular) << '\n';
-                    // Readable table: kh at multiples of pi/4 only.
-                    if ((4*i) % o.khPerZone == 0)
+                    if (print)
                         std::printf("%6.3f %8.3f %3d %12.6f %12.6f %10.6f %10.6f %11.3e %7.4f %8.5f\n",
                                     num, kh/pi, r.branch, r.G.real(), r.G.imag(), std::abs(r.G),
                                     std::abs(r.exact), phaseErr, r.match, r.spectralRadius);
