@@ -7,6 +7,7 @@
 // Unsolved directions (1D/2D cases) have exactly one node and no stencil.
 #pragma once
 #include "../types.hpp"
+#include "../common/hostDevice.hpp"
 #include <array>
 
 namespace mpm {
@@ -32,28 +33,28 @@ struct Lattice
 
     void finalise();
 
-    int padOf(int axis) const { return solved[axis] ? pad : 0; }
+    MPM_HOST_DEVICE int padOf(int axis) const { return solved[axis] ? pad : 0; }
 
     // Padded node index from padded (i, j, k).
-    Index node(int i, int j, int k) const
+    MPM_HOST_DEVICE Index node(int i, int j, int k) const
     {
         return i*stride[0] + j*stride[1] + k*stride[2];
     }
 
     // Padded node index of the real node (= FV cell) with real indices.
-    Index realNode(int i, int j, int k) const
+    MPM_HOST_DEVICE Index realNode(int i, int j, int k) const
     {
         return node(i + padOf(0), j + padOf(1), k + padOf(2));
     }
 
     // Linear cell index (x fastest) of real (i,j,k): the mesh's cell order
     // for a blockMesh box, used by the OpenFOAM layer's cell map.
-    Index cellIndex(int i, int j, int k) const
+    MPM_HOST_DEVICE Index cellIndex(int i, int j, int k) const
     {
         return i + Index(nCells[0])*(j + Index(nCells[1])*k);
     }
 
-    Real length(int axis) const { return nCells[axis]*h; }
+    MPM_HOST_DEVICE Real length(int axis) const { return nCells[axis]*h; }
 };
 
 } // namespace mpm

@@ -9,6 +9,7 @@
 // Gradients are returned per unit lattice spacing: divide by h.
 #pragma once
 #include "../types.hpp"
+#include "../common/hostDevice.hpp"
 #include <cmath>
 #include <string>
 
@@ -21,7 +22,7 @@ struct LinearHat
 {
     static constexpr int width = 2;
     static constexpr Real radius = 1.0;
-    static inline void eval(Real xi, Index& base, Real* w, Real* dw)
+    MPM_HOST_DEVICE static inline void eval(Real xi, Index& base, Real* w, Real* dw)
     {
         const Real fb = std::floor(xi);
         base = static_cast<Index>(fb);
@@ -36,7 +37,7 @@ struct QuadraticBSpline
 {
     static constexpr int width = 3;
     static constexpr Real radius = 1.5;
-    static inline void eval(Real xi, Index& base, Real* w, Real* dw)
+    MPM_HOST_DEVICE static inline void eval(Real xi, Index& base, Real* w, Real* dw)
     {
         const Real fb = std::floor(xi + 0.5) - 1.0;
         base = static_cast<Index>(fb);
@@ -52,7 +53,7 @@ struct CubicBSpline
 {
     static constexpr int width = 4;
     static constexpr Real radius = 2.0;
-    static inline void eval(Real xi, Index& base, Real* w, Real* dw)
+    MPM_HOST_DEVICE static inline void eval(Real xi, Index& base, Real* w, Real* dw)
     {
         const Real fb = std::floor(xi) - 1.0;
         base = static_cast<Index>(fb);

@@ -19,7 +19,7 @@ struct Stencil
     Real dw[D][W];    // already divided by h
     Real xiLocal[D];  // point position minus base node, lattice units
 
-    inline void compute(const Lattice& L, Real x0, Real x1, Real x2)
+    MPM_HOST_DEVICE inline void compute(const Lattice& L, Real x0, Real x1, Real x2)
     {
         const Real xs[3] = {x0, x1, x2};
         const Real invh = 1.0/L.h;
@@ -38,7 +38,7 @@ struct Stencil
     // global axis order (zero in unsolved directions), plus the offset
     // (x_I - x_p) in global axis order, for APIC.
     template<class Fn>
-    inline void forEach(const Lattice& L, Fn&& f) const
+    MPM_HOST_DEVICE inline void forEach(const Lattice& L, Fn&& f) const
     {
         const int a0 = L.axes[0];
         const Index s0 = L.stride[a0];
@@ -94,7 +94,7 @@ struct Stencil
     }
 
     // Diagonal of the APIC inertia D_p = sum N (x_I - x_p)^2 per solved axis.
-    inline void apicInertia(const Lattice& L, Real Dinv[3]) const
+    MPM_HOST_DEVICE inline void apicInertia(const Lattice& L, Real Dinv[3]) const
     {
         Dinv[0] = Dinv[1] = Dinv[2] = 0;
         for (int d = 0; d < D; ++d)
