@@ -6,31 +6,19 @@
 //   build/benchmarks/particleThroughput [cells=32] [steps=20] [shuffle=0] [reorder=1]
 #include "constitutive/constitutiveLaw.hpp"
 #include "step/mpmSystem.hpp"
+#include "machine.hpp"
 #include <algorithm>
 #include <chrono>
 #include <random>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <omp.h>
 #include <string>
-#include <sys/utsname.h>
-#include <unistd.h>
 
 using namespace mpm;
 
 namespace {
 
-std::string cpuModel()
-{
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-    {
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    }
-    return "unknown";
-}
 
 MpmSystem makeBlock(ShapeKind shape, int n, bool reorder, bool shuffle)
 {
@@ -82,14 +70,13 @@ int main(int argc, char** argv)
     // long mixing), and 0 to switch off StepOptions::reorderPoints
     const bool shuffle = argc > 3 && std::atoi(argv[3]) != 0;
     const bool reorder = argc > 4 ? std::atoi(argv[4]) != 0 : true;
-    utsname u; uname(&u);
     std::printf("# particleThroughput: 3D elastic block of %d^3 cells in a %d^3 lattice, 8 points/cell%s%s\n",
                 n, n + 8, shuffle ? ", points stored in random order" : "",
                 reorder ? "" : ", reorderPoints off");
     double load[3] = {0, 0, 0};
     if (getloadavg(load, 3) < 0) load[0] = -1;
-    std::printf("# machine: %s, %ld cores, %s %s, load average %.2f (other work skews 2-thread runs most)\n",
-                cpuModel().c_str(), sysconf(_SC_NPROCESSORS_ONLN), u.sysname, u.release, load[0]);
+    std::printf("# machine: %s, load average %.2f (other work skews 2-thread runs most)\n",
+                bench::machine().c_str(), load[0]);
     std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s\n", "shape", "threads", "points",
                 "ms/step", "Mpoint-step/s", "P2G%", "nodal%", "G2P%", "stress%");
     const int maxThreads = omp_get_num_procs() < 2 ? 1 : 2;

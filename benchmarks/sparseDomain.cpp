@@ -9,30 +9,18 @@
 //   build/benchmarks/sparseDomain [steps=300]
 #include "constitutive/constitutiveLaw.hpp"
 #include "step/mpmSystem.hpp"
+#include "machine.hpp"
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <omp.h>
 #include <string>
-#include <sys/utsname.h>
-#include <unistd.h>
 
 using namespace mpm;
 
 namespace {
 
-std::string cpuModel()
-{
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-    {
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    }
-    return "unknown";
-}
 
 MpmSystem makeBall(int nx, int ny, int nz, bool sparse)
 {
@@ -68,9 +56,8 @@ int main(int argc, char** argv)
 {
     const int steps = argc > 1 ? std::atoi(argv[1]) : 300;
     omp_set_num_threads(1);
-    utsname u; uname(&u);
     std::printf("# sparseDomain: one elastic ball (QBS, 8 points/cell) in growing empty boxes, %d steps, 1 thread\n", steps);
-    std::printf("# machine: %s, %ld cores, %s %s\n", cpuModel().c_str(), sysconf(_SC_NPROCESSORS_ONLN), u.sysname, u.release);
+    std::printf("# machine: %s\n", bench::machine().c_str());
     std::printf("%-6s %-12s %8s %8s %12s %10s %12s %10s %10s\n", "grid", "box (cells)", "volume", "points",
                 "ms/step", "vs 1x", "active nodes", "nodal%", "Mpt-st/s");
     const int boxes[5][3] = {{20, 20, 20}, {40, 20, 20}, {40, 20, 40}, {40, 40, 40}, {80, 20, 80}};

@@ -241,15 +241,10 @@ void MpmSystem::stepImpl(Real dt)
 template<class K, int D>
 void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
 {
-    // Only the active region can be non-zero (binPoints zeroed the rest).
-    // A fresh P2G (massMomentum) starts every array from zero; the force
-    // scatter alone (USF) adds the internal force to the gravity there.
+    // A fresh P2G (massMomentum) always follows binPoints, which left every
+    // grid array zero; the force scatter alone (USF) adds the internal
+    // force to the gravity there; the MUSL re-map starts its momentum anew.
     auto& g = grid_;
-    if (massMomentum)
-    {
-        region_.zero({g.mass.data(), g.volume.data(), g.momentum[0].data(), g.momentum[1].data(),
-                      g.momentum[2].data(), g.force[0].data(), g.force[1].data(), g.force[2].data()});
-    }
     if (velocityOnly) region_.zero({g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()});
     auto pick = [](bool x, auto&& k) { if (x) k(std::true_type{}); else k(std::false_type{}); };
     pick(massMomentum, [&](auto mm)
@@ -708,7 +703,9 @@ void MpmSystem::updateStress(Real dt)
     // grains) keeps F = I
     std::vector<char> deforms(materials_.size());
     for (std::size_t m = 0; m < materials_.size(); ++m) deforms[m] = materials_[m]->needsDeformation();
-    #pragma omp parallel for schedule(static) reduction(min:firstBad) if(worthThreads(n))
+    Index nInverted = 0;
+    std::int64_t firstInverted = std::numeric_limits<std::int64_t>::max();
+    #pragma omp parallel for schedule(static) reduction(min:firstBad, firstInverted) reduction(+:nInverted) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         const ConstitutiveLaw& law = *materials_[P.material[p]];
@@ -737,8 +734,24 @@ void MpmSystem::updateStress(Real dt)
         for (int c = 0; c < 6; ++c) P.sigma[c][p] = sig[c];
         P.eqPlasticStrain[p] = ep;
         P.volume[p] = P.volume0[p]*Jn;
+        if (Jn <= 0 || P.volume[p] <= 0)
+        {
+            ++nInverted;
+            firstInverted = std::min<std::int64_t>(firstInverted, P.id[p]);
+        }
     }
     stopIfNonFinite(firstBad, "stress or deformation");
+    inverted_ = InvertedPoints{};
+    inverted_.count = nInverted;
+    for (Index p = 0; nInverted > 0 && p < n; ++p)
+    {
+        if (P.id[p] != firstInverted) continue;
+        inverted_.id = firstInverted;
+        inverted_.material = P.material[p];
+        inverted_.J = P.J(p);
+        inverted_.volume = P.volume[p];
+        break;
+    }
 }
 
 void MpmSystem::stopIfNonFinite(Index firstBad, const char* what)

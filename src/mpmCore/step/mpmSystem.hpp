@@ -107,6 +107,20 @@ public:
     const GridState& grid() const { return grid_; }
     const StepTimers& timers() const { return timers_; }
     Index stepCount() const { return stepCount_; }
+    // Points the last stress update compressed to J <= 0 or volume <= 0,
+    // on this rank (a NaN is the non-finite stop's): how many, and the one
+    // of lowest id with its material, J and volume. Found in the update's
+    // own loop, so checking costs no pass over the points.
+    struct InvertedPoints
+    {
+        Index count = 0;
+        std::int64_t id = 0;
+        int material = -1;
+        Real J = 0;
+        Real volume = 0;
+    };
+    const InvertedPoints& inverted() const { return inverted_; }
+
     // Nodes of the last step's active region (all nodes: sparseGrid off)
     Index activeNodeCount() const { return Index(region_.nodes().size()); }
     void setGravity(const std::array<Real, 3>& g) { options_.gravity = g; }
@@ -145,6 +159,7 @@ public:
 
 private:
     template<class K, int D> void stepImpl(Real dt);
+    // P2G; massMomentum (a fresh P2G) must come right after binPoints()
     template<class K, int D> void scatter(bool massMomentum, bool force, bool velocityOnly);
     template<class K, int D, bool MassMomentum, bool Force, bool Apic> void scatterKernel();
     template<class K, int D> void gather(Real dt);
@@ -201,6 +216,7 @@ private:
     FluidCoupling coupling_;
     Index stepCount_ = 0;
     Index migrated_ = 0;
+    InvertedPoints inverted_;
     Real massTolerance_ = 0;
 
     // Scratch per point: velocity gradient and displacement over the step.

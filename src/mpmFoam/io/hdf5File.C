@@ -28,6 +28,19 @@ hid_t openObject(hid_t file, const std::string& obj)
     return H5Oopen(file, obj.c_str(), H5P_DEFAULT);
 }
 
+// Selects rows [offset, offset + n) of a [rows, width] file space (none when
+// n = 0: a rank without rows still takes part) and returns the matching
+// memory space
+hid_t selectRows(hid_t fileSpace, int rank, hsize_t offset, hsize_t n, hsize_t width)
+{
+    hsize_t start[2] = {offset, 0}, count[2] = {n, width};
+    if (n > 0) H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, start, nullptr, count, nullptr);
+    else H5Sselect_none(fileSpace);
+    const hid_t mem = H5Screate_simple(rank, count, nullptr);
+    if (n == 0) H5Sselect_none(mem);
+    return mem;
+}
+
 hid_t stringType(std::size_t size = H5T_VARIABLE)
 {
     const hid_t t = H5Tcopy(H5T_C_S1);
@@ -126,12 +139,7 @@ void Foam::hdf5File::writeRows
         H5Dclose
     );
     if (set < 0) fail("cannot create dataset " + name);
-    hsize_t start[2] = {offset, 0}, count[2] = {n, width};
-    if (n > 0) H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
-    else H5Sselect_none(space);
-    hsize_t memDims[2] = {n, width};
-    handle mem(H5Screate_simple(rank, memDims, nullptr), H5Sclose);
-    if (n == 0) H5Sselect_none(mem);
+    handle mem(selectRows(space, rank, offset, n, width), H5Sclose);
     if (H5Dwrite(set, memType<T>(), mem, space, xfer_, local.data()) < 0)
     {
         fail("writing dataset " + name + " failed; is the disk full?");
@@ -157,12 +165,7 @@ void Foam::hdf5File::readRows
     }
     const hsize_t width = rank == 2 ? dims[1] : 1;
     local.resize(n*width);
-    hsize_t start[2] = {offset, 0}, count[2] = {n, width};
-    if (n > 0) H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
-    else H5Sselect_none(space);
-    hsize_t memDims[2] = {n, width};
-    handle mem(H5Screate_simple(rank, memDims, nullptr), H5Sclose);
-    if (n == 0) H5Sselect_none(mem);
+    handle mem(selectRows(space, rank, offset, n, width), H5Sclose);
     if (H5Dread(set, memType<T>(), mem, space, xfer_, local.data()) < 0)
     {
         fail("reading dataset " + name + " failed");

@@ -3,39 +3,22 @@
 
 void Foam::stopIfInverted
 (
-    const mpm::Particles& P,
+    const mpm::MpmSystem::InvertedPoints& local,
     const wordList& materialNames,
     label step,
     const Time& runTime
 )
 {
-    label nBad = 0;
-    label id = labelMax;
-    label material = -1;
-    scalar J = 0, volume = 0;
-    for (mpm::Index p = 0; p < P.size(); ++p)
-    {
-        const scalar Jp = P.J(p);
-        // NaN is the non-finite check's (the core's); not counted here
-        if (!(Jp <= 0) && !(P.volume[p] <= 0)) continue;
-        ++nBad;
-        if (label(P.id[p]) < id)
-        {
-            id = label(P.id[p]);
-            material = P.material[p];
-            J = Jp;
-            volume = P.volume[p];
-        }
-    }
-    if (returnReduce(nBad, sumOp<label>()) == 0) return;
+    const label nBad = returnReduce(label(local.count), sumOp<label>());
+    if (nBad == 0) return;
 
     // The named point: the lowest id; its values from the rank holding it
+    const label id = local.count > 0 ? label(local.id) : labelMax;
     const label firstId = returnReduce(id, minOp<label>());
     const bool mine = id == firstId;
-    material = returnReduce(mine ? material : label(-1), maxOp<label>());
-    J = returnReduce(mine ? J : -GREAT, maxOp<scalar>());
-    volume = returnReduce(mine ? volume : -GREAT, maxOp<scalar>());
-    nBad = returnReduce(nBad, sumOp<label>());
+    const label material = returnReduce(mine ? label(local.material) : label(-1), maxOp<label>());
+    const scalar J = returnReduce(mine ? local.J : -GREAT, maxOp<scalar>());
+    const scalar volume = returnReduce(mine ? local.volume : -GREAT, maxOp<scalar>());
 
     FatalErrorInFunction
         << "Stopping at time " << runTime.timeName() << ", step " << step

@@ -237,7 +237,7 @@ void Foam::mpmModel::evolve(scalar dt)
             << e.what() << nl << "Nothing was written for this time."
             << exit(FatalError);
     }
-    stopIfInverted(system_.particles(), materials_.names(), label(system_.stepCount()), mesh_.time());
+    stopIfInverted(system_.inverted(), materials_.names(), label(system_.stepCount()), mesh_.time());
     ++steps_;
 }
 
