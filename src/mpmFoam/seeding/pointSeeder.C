@@ -263,19 +263,22 @@ Foam::label Foam::seedRegions
         // The later region wins: the points of earlier regions inside this
         // one go (seeding both would double the mass in the overlap), unless
         // it says `overlap add` (a mixture: each region its solidFraction).
-        const word overlap(d.getOrDefault<word>("overlap", "replace"));
-        if (overlap != "replace" && overlap != "add")
-        {
-            FatalIOErrorInFunction(d)
-                << "Unknown overlap '" << overlap << "'" << nl
-                << "Valid overlap choices: replace add" << exit(FatalIOError);
-        }
+        const bool add = readChoice
+        (
+            d, "overlap",
+            [](const std::string& w, bool& v)
+            {
+                v = w == "add";
+                return v || w == "replace";
+            },
+            [](bool v) { return v ? "add" : "replace"; },
+            "replace add", false, false
+        );
         const Tuple2<label, scalar> replaced
         (
-            overlap == "add" ? Tuple2<label, scalar>(0, 0)
-          : removeInside(surf(), points, n0, regionOf)
+            add ? Tuple2<label, scalar>(0, 0) : removeInside(surf(), points, n0, regionOf)
         );
-        if (overlap == "add") Info<< "    overlap add: earlier points kept" << nl;
+        if (add) Info<< "    overlap add: earlier points kept" << nl;
         if (replaced.first())
         {
             Info<< "    replaces " << replaced.first() << " points (mass "
