@@ -33,11 +33,21 @@ fi
 c=$(freshCopy unknownForce)
 sed -i 's/forces      (drag pressureGradient);/forces      (drag lift);/' "$(props "$c")"
 expectFailure "unknown coupling force" "Unknown force 'lift' in forces" runIn "$c" mpmFoam
-expectFailure "coupling forces listed" "Valid forces: drag pressureGradient gravity virtualMass" runIn "$c" mpmFoam
+expectFailure "coupling forces listed" "Valid forces: drag gravity pressureGradient virtualMass" runIn "$c" mpmFoam
+
+c=$(freshCopy forceTwice)
+sed -i 's/forces      (drag pressureGradient);/forces      (drag pressureGradient drag);/' "$(props "$c")"
+expectFailure "force listed twice" "Force 'drag' listed twice in forces" runIn "$c" mpmFoam
 
 c=$(freshCopy negativeCvm)
 sed -i 's/forces      (drag pressureGradient);/forces      (drag pressureGradient virtualMass);\n    Cvm         -0.5;/' "$(props "$c")"
 expectFailure "virtual-mass coefficient out of range" "Keyword Cvm = -0.5 is out of range \[0, 10\]" runIn "$c" mpmFoam
+
+# A force's keyword is known only with the force selected: Cvm without
+# virtualMass would be silently ignored otherwise
+c=$(freshCopy CvmWithoutVirtualMass)
+sed -i 's/forces      (drag pressureGradient);/forces      (drag pressureGradient);\n    Cvm         0.5;/' "$(props "$c")"
+expectFailure "Cvm without the virtualMass force" "Unknown keyword 'Cvm' in coupling" runIn "$c" mpmFoam
 
 c=$(freshCopy unknownMode)
 sed -i 's/mode        twoWay;/mode        threeWay;/' "$(props "$c")"
@@ -53,7 +63,7 @@ c=$(freshCopy misspeltCoupling)
 sed -i 's/alphaMax    0.63;/alphaMx     0.63;/' "$(props "$c")"
 expectFailure "misspelt coupling keyword" "Unknown keyword 'alphaMx' in coupling; did you mean 'alphaMax'\?" runIn "$c" mpmFoam
 expectFailure "misspelt coupling keyword: file and valid keywords" "file: .*constant/mpmProperties.coupling at line" runIn "$c" mpmFoam
-expectFailure "misspelt coupling keyword lists the valid keywords" "Valid keywords: mode forces alphaMax subCycles Cvm" runIn "$c" mpmFoam
+expectFailure "misspelt coupling keyword lists the valid keywords" "Valid keywords: mode forces alphaMax subCycles$" runIn "$c" mpmFoam
 
 c=$(freshCopy misspeltDrag)
 sed -i 's/drag    { model Ergun; d 1e-3; }/drag    { model Ergun; d 1e-3; alphaFmin 0.1; }/' "$(props "$c")"

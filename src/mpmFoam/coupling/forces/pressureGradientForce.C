@@ -1,0 +1,45 @@
+#include "pressureGradientForce.H"
+#include "fluidCoupling.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(pressureGradientForce, 0);
+    addToRunTimeSelectionTable(solidForce, pressureGradientForce, dictionary);
+}
+
+Foam::pressureGradientForce::pressureGradientForce
+(
+    fluidCoupling& coupling,
+    const dictionary& couplingDict
+)
+:
+    solidForce(coupling, couplingDict)
+{}
+
+void Foam::pressureGradientForce::correct()
+{
+    gradp_ = coupling_.fluid().gradp()().primitiveField();
+}
+
+void Foam::pressureGradientForce::addTo(solidForceTerms& t) const
+{
+    const scalar rhoF = coupling_.fluid().rho().value();
+    forAll(gradp_, celli) t.F[celli] -= rhoF*gradp_[celli];
+    if (coupling_.mode() == fluidCoupling::couplingMode::oneWay) return;
+
+    const volScalarField& beta = coupling_.fluid().beta();
+    const scalarField& V = coupling_.mesh().V();
+    const bool volumeCoupled = coupling_.volumeCoupled();
+    forAll(beta, celli)
+    {
+        const scalar KDrag = beta[celli]*V[celli];
+        if (KDrag <= 0) continue;
+        const scalar aS = coupling_.cappedAlphaSolid(celli);
+        const scalar aF = volumeCoupled ? 1 - aS : 1;
+        const scalar slipPerDv = volumeCoupled ? 1/aF : 1;
+        const scalar Kp = KDrag*slipPerDv*aS/aF;
+        t.K[celli] += Kp;
+        t.KU[celli] += Kp*coupling_.solidVelocity(celli);
+    }
+}
