@@ -94,7 +94,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     mpm_.system().setGravity({0, 0, 0});
 
     forces_.setSize(forceNames_.size());
-    forceTime_.setSize(forceNames_.size(), 0);
+    forceTime_.setSize(forceNames_.size(), Zero);
     forAll(forceNames_, i)
     {
         forces_.set(i, solidForce::New(forceNames_[i], *this, d));

@@ -89,6 +89,26 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     Info<< endl;
     system_.mapToGrid();
     updateFields();
+    readDiagnostics();
+}
+
+void Foam::mpmModel::readDiagnostics()
+{
+    diagnosticNames_ = dict_.getOrDefault<wordList>("diagnostics", wordList({"summary"}));
+    Info<< "Diagnostics: " << diagnosticNames_
+        << (dict_.found("diagnostics") ? "" : " (default)") << nl << endl;
+    diagnostics_.setSize(diagnosticNames_.size());
+    diagnosticTime_.setSize(diagnosticNames_.size(), Zero);
+    forAll(diagnosticNames_, i)
+    {
+        if (diagnosticNames_.find(diagnosticNames_[i]) != i)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Diagnostic '" << diagnosticNames_[i] << "' listed twice in "
+                << "diagnostics " << diagnosticNames_ << exit(FatalIOError);
+        }
+        diagnostics_.set(i, mpmDiagnostic::New(diagnosticNames_[i], *this, dict_));
+    }
 }
 
 std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
@@ -277,57 +297,19 @@ bool Foam::mpmModel::logThisStep() const
 
 void Foam::mpmModel::report(Ostream& os)
 {
-    const floatingPointTrapsOff noTraps;
-    const mpm::Particles& P = system_.particles();
-    scalar ke = 0, se = 0, vmax = 0, mass = 0;
-    vector mom(Zero);
-    for (mpm::Index p = 0; p < P.size(); ++p)
+    forAll(diagnostics_, i)
     {
-        const vector v(P.v[0][p], P.v[1][p], P.v[2][p]);
-        ke += 0.5*P.mass[p]*magSqr(v);
-        mom += P.mass[p]*v;
-        mass += P.mass[p];
-        vmax = max(vmax, magSqr(v));
-        mpm::Real F[9];
-        for (int e = 0; e < 9; ++e) F[e] = P.F[e][p];
-        const mpm::Real sig[6] = {P.sigma[0][p], P.sigma[1][p], P.sigma[2][p],
-                             P.sigma[3][p], P.sigma[4][p], P.sigma[5][p]};
-        se += P.volume0[p]*system_.material(P.material[p]).storedEnergy(sig, F);
+        mpm::ScopedTimer timer(diagnosticTime_[i]);
+        diagnostics_[i].report(os);
     }
-    reduce(ke, sumOp<scalar>());
-    reduce(se, sumOp<scalar>());
-    reduce(mass, sumOp<scalar>());
-    reduce(mom, sumOp<vector>());
-    reduce(vmax, maxOp<scalar>());
-    const vector vcm(mass > 0 ? mom/mass : vector(Zero));
-    os  << "MPM: step " << label(system_.stepCount()) << ", kinetic energy "
-        << ke << ", elastic energy " << se << ", max |U| "
-        << Foam::sqrt(vmax) << nl;
     reportBalance(os);
-
-    if (!Pstream::master()) return;
-    if (!summaryFile_.valid())
-    {
-        const fileName dir
-        (
-            mesh_.time().globalPath()/"postProcessing"/"mpmSummary"
-           /mesh_.time().timeName(mesh_.time().startTime().value())
-        );
-        mkDir(dir);
-        summaryFile_.reset(new OFstream(dir/"summary.dat"));
-        summaryFile_()
-            << "# time kineticEnergy elasticEnergy Ucm_x Ucm_y Ucm_z maxU" << nl
-            << "# elasticEnergy: stored energy of each law (strain energy,"
-            << " complementary energy, fluid compression energy)" << nl;
-    }
-    summaryFile_().precision(12);
-    summaryFile_()
-        << mesh_.time().value() << ' ' << ke << ' ' << se << ' '
-        << vcm.x() << ' ' << vcm.y() << ' ' << vcm.z() << ' '
-        << Foam::sqrt(vmax) << endl;
 }
 
-void Foam::mpmModel::summary(Ostream& os, scalar fluidTime) const
+void Foam::mpmModel::summary
+(
+    Ostream& os,
+    const List<Tuple2<word, scalar>>& effects
+) const
 {
     // The slowest rank's time of each phase: what the run waited for.
     mpm::StepTimers t = system_.timers();
@@ -336,12 +318,23 @@ void Foam::mpmModel::summary(Ostream& os, scalar fluidTime) const
         reduce(*x, maxOp<double>());
     }
     const scalar io = returnReduce(ioTime_, maxOp<scalar>());
-    fluidTime = returnReduce(fluidTime, maxOp<scalar>());
-    const scalar total = t.total() + io + max(fluidTime, scalar(0));
-    const label nPoints = returnReduce(label(system_.particles().size()), sumOp<label>());
-    auto line = [&](const char* name, scalar s)
+    // Each selected effect by name: the diagnostics, then the others'
+    List<Tuple2<word, scalar>> named(diagnostics_.size());
+    forAll(diagnostics_, i)
     {
-        os  << "    " << name << tab << s << " s" << tab
+        named[i] = Tuple2<word, scalar>("diagnostic " + diagnosticNames_[i], diagnosticTime_[i]);
+    }
+    named.append(effects);
+    scalar total = t.total() + io;
+    for (auto& e : named)
+    {
+        reduce(e.second(), maxOp<scalar>());
+        total += e.second();
+    }
+    const label nPoints = returnReduce(label(system_.particles().size()), sumOp<label>());
+    auto line = [&](const std::string& name, scalar s)
+    {
+        os  << "    " << name.c_str() << tab << s << " s" << tab
             << (total > 0 ? 100*s/total : 0) << " %" << nl;
     };
     os  << nl << "MPM summary: " << nPoints
@@ -363,6 +356,6 @@ void Foam::mpmModel::summary(Ostream& os, scalar fluidTime) const
         line("migration    ", t.migration);
     }
     line("I/O          ", io);
-    if (fluidTime >= 0) line("fluid (PIMPLE)", fluidTime);
+    for (const auto& e : named) line(e.first(), e.second());
     os  << endl;
 }

@@ -154,12 +154,11 @@ void Foam::mpmFoamModule::postWrite()
 
 void Foam::mpmFoamModule::end()
 {
+    List<Tuple2<word, scalar>> effects;
     if (coupled())
     {
-        mpm_.summary(Info, fluidTime_);
+        effects.append(Tuple2<word, scalar>("fluid (PIMPLE)", fluidTime_));
+        effects.append(coupling_->costs());
     }
-    else
-    {
-        mpm_.summary(Info);
-    }
+    mpm_.summary(Info, effects);
 }
