@@ -424,7 +424,7 @@ TEST(ConstitutiveLawRegistry, EveryLawIsConstructibleByName)
 {
     const Coefficients values{{"rho", 1000}, {"E", 1e6}, {"nu", 0.25}, {"K", 1e5},
                               {"mu", 1e-3}, {"phi", 30}};
-    ASSERT_EQ(availableLaws().size(), 5u);
+    ASSERT_EQ(availableLaws().size(), 6u);
     for (const LawInfo& info : availableLaws())
     {
         ASSERT_EQ(findLaw(info.name), &info);
@@ -453,7 +453,7 @@ TEST(ConstitutiveLawRegistry, DefaultsAreApplied)
 TEST(ConstitutiveLawRegistry, UnknownLawListsValidNames)
 {
     expectInvalidMentioning([] { makeLaw("hookean", {}); },
-        {"hookean", "linearElastic", "neoHookean", "newtonianFluid", "druckerPrager"});
+        {"hookean", "linearElastic", "neoHookean", "newtonianFluid", "druckerPrager", "muIRheology"});
 }
 
 TEST(ConstitutiveLawRegistry, BadParametersAreNamed)

@@ -6,6 +6,7 @@
 #include "dilute.hpp"
 #include "druckerPrager.hpp"
 #include "linearElastic.hpp"
+#include "muIRheology.hpp"
 #include "neoHookean.hpp"
 #include "newtonianFluid.hpp"
 #include <cmath>
@@ -90,6 +91,27 @@ std::vector<LawInfo> buildRegistry()
                      "and stress-free (0: always in contact) [-]", 0.0, 0, 1, false, true)
         },
         &DruckerPrager::create
+    });
+    laws.push_back
+    ({
+        "muIRheology",
+        "dense granular flow, mu(I) rheology (Jop, Forterre & Pouliquen 2006) with an "
+        "elastic predictor; stress-free in tension and below critical packing",
+        {
+            density(), youngModulus(), poissonRatio(),
+            // Glass beads of Jop, Forterre & Pouliquen (2006)
+            optional("muS", "friction coefficient at I -> 0 (static) [-]",
+                     MuIRheology::defaultMuS(), 0, inf, false, false),
+            optional("mu2", "friction coefficient at I -> infinity [-], at least muS",
+                     MuIRheology::defaultMu2(), 0, inf, false, false),
+            optional("I0", "inertial number of the mid-way friction (muS + mu2)/2 [-]",
+                     0.279, 0, inf, true, false),
+            optional("d", "grain diameter [m]", 0.53e-3, 0, inf, true, false),
+            optional("rhoS", "grain (solid) density [kg/m^3]", 2450, 0, inf, true, false),
+            optional("alphaCritical", "critical grain volume fraction mass/(rhoS volume): "
+                     "looser grains are disconnected and stress-free [-]", 0.6, 0, 1, false, false)
+        },
+        &MuIRheology::create
     });
     laws.push_back
     ({

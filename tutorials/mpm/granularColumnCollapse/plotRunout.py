@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""Runout against aspect ratio for the runs of ./sweepAspectRatio.
+
+For each run directory (sweep/<material>_a<a>_h<h>) measures the runout
+(L_f - a0)/a0 with plotProfile.measure (front of the deposit: the farthest
+point + half a point spacing), prints it with Lube et al.'s (2005)
+quasi-2D law
+
+    (L_f - a0)/a0 = 1.2 a          a < 2.3
+                    1.9 a^(2/3)    a > 2.3
+
+and the change of the runout when the cell size halves, and writes
+runoutVsAspectRatio.png. Usage: plotRunout.py RUN... [--no-plot]
+"""
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+import mpmPost
+from plotProfile import measure
+
+
+def lube(a):
+    return 1.2*a if a < 2.3 else 1.9*a**(2.0/3.0)
+
+
+def run_parameters(run):
+    m = re.search(r"(\w+)_a([0-9.]+)_h([0-9.]+)$", os.path.basename(run.rstrip("/")))
+    return m.group(1), float(m.group(2)), float(m.group(3))
+
+
+def main():
+    runs = [r for r in sys.argv[1:] if not r.startswith("--")]
+    rows = []
+    print("%-12s %5s %7s %6s %8s %8s %7s %10s %8s" % ("material", "a", "h [m]", "points", "runout",
+          "Lube", "ratio", "maxU end", "t end"))
+    for run in runs:
+        law, a, h = run_parameters(run)
+        m = measure(run)
+        runout = (m["Lf"] - m["a0"])/m["a0"]
+        s = mpmPost.read_summary(run)
+        rows.append((law, a, h, runout))
+        print("%-12s %5g %7g %6d %8.3f %8.3f %7.3f %10.3g %8s" % (law, m["h0"]/m["a0"], h, len(m["x1"]),
+              runout, lube(a), runout/lube(a), s["maxU"][-1], m["times"][-1]))
+
+    print("Change of the runout when the cell size halves:")
+    for law in sorted({r[0] for r in rows}):
+        for a in sorted({r[1] for r in rows if r[0] == law}):
+            by_h = sorted((h, ro) for l, aa, h, ro in rows if l == law and aa == a)
+            for (h2, r2), (h1, r1) in zip(by_h, by_h[1:]):
+                if abs(h1/h2 - 2) < 1e-6:
+                    print("  %-12s a = %-4g h %g -> %g: %.3f -> %.3f (%+.1f %%)"
+                          % (law, a, h1, h2, r1, r2, 100*(r2 - r1)/r1))
+
+    if "--no-plot" in sys.argv:
+        return
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    aa = np.linspace(0.3, 10, 400)
+    ax.plot(aa[aa < 2.3], [lube(a) for a in aa[aa < 2.3]], "k-", lw=1.2, label="Lube et al. 2005: 1.2 a")
+    ax.plot(aa[aa > 2.3], [lube(a) for a in aa[aa > 2.3]], "k--", lw=1.2,
+            label="Lube et al. 2005: 1.9 a$^{2/3}$")
+    sizes = sorted({r[2] for r in rows}, reverse=True)
+    markers = ["o", "s", "^", "v"]
+    colours = {}
+    for law in sorted({r[0] for r in rows}):
+        colour = colours.setdefault(law, "C%d" % len(colours))
+        for h, mk in zip(sizes, markers):
+            pts = sorted((a, ro) for l, a, hh, ro in rows if l == law and hh == h)
+            if pts:
+                ax.plot(*zip(*pts), mk, color=colour, mfc="none" if h != sizes[-1] else colour,
+                        ms=6, label="%s, h = %g m" % (law, h))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("aspect ratio a = h$_0$/a$_0$")
+    ax.set_ylabel("runout (L$_f$ - a$_0$)/a$_0$")
+    ax.set_title("Granular column collapse: runout against aspect ratio")
+    ax.legend(fontsize=7)
+    ax.grid(True, which="both", lw=0.3)
+    fig.tight_layout()
+    fig.savefig("runoutVsAspectRatio.png", dpi=120)
+    print("Wrote runoutVsAspectRatio.png")
+
+
+if __name__ == "__main__":
+    main()
