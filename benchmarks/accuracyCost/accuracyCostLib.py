@@ -8,11 +8,12 @@ COLUMNS = [
     "set", "shape", "alpha", "mass", "ppc", "cells", "cflFraction",
     "limitBasis", "analysedLimitConsistent", "cfl", "dt", "steps", "points",
     "nodeCrossing", "status", "failure", "maxURatio", "vcmMaxError", "vcmRmsError", "L2Error",
+    "vcmCentredError",
     "solverTime", "p2gTime", "nodalTime", "g2pTime", "constitutiveTime", "ioTime",
     "wallTime", "secPerPointStep",
 ]
 
-METRICS = {"vcm": "vcmMaxError", "L2": "L2Error"}
+METRICS = {"vcm": "vcmMaxError", "vcmc": "vcmCentredError", "L2": "L2Error"}
 TIMES = {"solver": "solverTime", "wall": "wallTime"}
 
 _INT = {"ppc", "cells", "steps", "points", "nodeCrossing"}

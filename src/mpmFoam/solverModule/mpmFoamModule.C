@@ -4,6 +4,7 @@
 #include "choice.H"
 #include "mpmControls.H"
 #include "completeTimes.H"
+#include "accuracyFrontLog.H"
 #include <cmath>
 
 namespace Foam
@@ -162,4 +163,5 @@ void Foam::mpmFoamModule::end()
     {
         mpm_.summary(Info);
     }
+    reportExpectedError(Info, runTime, mpm_.controls().accuracyFront);
 }
