@@ -238,10 +238,15 @@ def run_one(r, scratch, idx):
         r["solverTime"] = sum(cb.values())
         r["secPerPointStep"] = r["solverTime"]/(r["points"]*r["steps"])
     if rc != 0:
-        m = re.search(r"Stopping at time (\S+): non-finite .*? at step (\d+)", log)
+        # every stop of the solver on a blown-up state (non-finite values,
+        # points compressed to J <= 0) starts "Stopping at time t"
+        m = re.search(r"Stopping at time ([^:, ]+)[:,] (.*)", log)
         if m:
             r["status"] = "unstable"
-            r["failure"] = f"non-finite at step {m.group(2)} (t = {float(m.group(1).rstrip(':')):.4g})"
+            step = re.search(r"at step (\d+)|step (\d+):", m.group(2))
+            what = "J <= 0" if "compressed to zero volume" in m.group(2) else "non-finite"
+            r["failure"] = (f"{what} at step {next(g for g in step.groups() if g)} " if step else f"{what} ") \
+                + f"(t = {float(m.group(1)):.4g})"
         else:
             r["log"] = log[-2000:]
         return r

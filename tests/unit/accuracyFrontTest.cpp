@@ -1,8 +1,8 @@
 // Accuracy front (accuracy/accuracyFront.hpp): reading the results CSV of
 // bin/mpmAccuracyCost and finding the case's configuration in it -- the
-// end-of-run "Expected error" line. A made-up front of 4 runs: run b is
-// dominated by run c (dearer and less accurate), run d failed, run e is the
-// reference (never quoted).
+// end-of-run "Expected error" line. A made-up front of 5 runs: QBS 48 is
+// dominated by CBS 48 (dearer and less accurate), CBS 24 is unstable (so CBS
+// 48 is fragile), CBS 96 is the reference (never quoted).
 #include "accuracy/accuracyFront.hpp"
 #include <gtest/gtest.h>
 #include <map>
@@ -17,14 +17,14 @@ const std::string csv =
     "# cpu: test\n"
     "# parameters: shape cells\n"
     "# error: max pore-pressure error\n"
-    "shape,cells,reference,status,failure,error,solverTime,"
+    "shape,cells,reference,status,fragile,failure,error,solverTime,"
     "constant/mpmProperties:shapeFunction,system/blockMeshDict:h,"
     "system/mpmSetParticlesDict:regions/soil/max\n"
-    "QBS,24,0,ok,,0.04,0.5,quadraticBSpline,0.005,(0.005 0.1 0.005)\n"
-    "QBS,48,0,ok,,0.03,2.0,quadraticBSpline,0.0025,(0.0025 0.1 0.0025)\n"
-    "CBS,48,0,ok,,0.02,1.5,cubicBSpline,0.0025,(0.0025 0.1 0.0025)\n"
-    "CBS,24,0,unstable,\"non-finite, step 3\",nan,0.1,cubicBSpline,0.005,(0.005 0.1 0.005)\n"
-    "CBS,96,1,ok,,0.001,9,cubicBSpline,0.00125,(0.00125 0.1 0.00125)\n";
+    "QBS,24,0,ok,0,,0.04,0.5,quadraticBSpline,0.005,(0.005 0.1 0.005)\n"
+    "QBS,48,0,ok,0,,0.03,2.0,quadraticBSpline,0.0025,(0.0025 0.1 0.0025)\n"
+    "CBS,48,0,ok,1,,0.02,1.5,cubicBSpline,0.0025,(0.0025 0.1 0.0025)\n"
+    "CBS,24,0,unstable,0,\"non-finite, step 3\",nan,0.1,cubicBSpline,0.005,(0.005 0.1 0.005)\n"
+    "CBS,96,1,ok,0,,0.001,9,cubicBSpline,0.00125,(0.00125 0.1 0.00125)\n";
 
 // A case whose dictionaries hold these values
 EntryLookup caseWith(std::map<std::string, std::string> values)
@@ -52,6 +52,8 @@ TEST(AccuracyFront, ParsesHeaderColumnsAndQuotedFields)
     EXPECT_FALSE(f.runs[4].usable);   // the reference run
     EXPECT_TRUE(f.runs[0].usable);
     EXPECT_DOUBLE_EQ(f.runs[2].error, 0.02);
+    EXPECT_TRUE(f.runs[2].fragile);    // its family was unstable (the CBS 24 run)
+    EXPECT_FALSE(f.runs[0].fragile);
     EXPECT_EQ(describe(f, f.runs[2]), "shape CBS, cells 48");
 }
 

@@ -116,6 +116,8 @@ AccuracyFront parseAccuracyFront(const std::string& text)
         for (size_t i = 0; i < names.size(); ++i) r.columns[names[i]] = cells[i];
         r.error = numberOr(r.columns, "error");
         r.solverTime = numberOr(r.columns, "solverTime");
+        const auto fragile = r.columns.find("fragile");
+        r.fragile = fragile != r.columns.end() && fragile->second == "1";
         const auto ref = r.columns.find("reference");
         r.usable = r.columns["status"] == "ok" && std::isfinite(r.error) && std::isfinite(r.solverTime)
                    && (ref == r.columns.end() || ref->second.empty() || ref->second == "0");

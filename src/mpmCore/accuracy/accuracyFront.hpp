@@ -24,6 +24,7 @@ struct FrontRun
     double error = 0;
     double solverTime = 0;
     bool usable = false;       // status ok and not the reference run
+    bool fragile = false;      // its family was unstable at another refinement
 };
 
 struct AccuracyFront

@@ -93,6 +93,10 @@ void Foam::reportExpectedError(Ostream& os, const Time& runTime, const fileName&
     os  << r.error << " (" << what.c_str() << "), measured for this configuration ("
         << mpm::accuracy::describe(f, r).c_str() << ") in " << front
         << " at " << r.solverTime << " s solver time; ";
+    if (r.fragile)
+    {
+        os  << "fragile (the same settings went unstable at another refinement of the sweep); ";
+    }
     if (expected.onFront)
     {
         os  << "on the Pareto front" << endl;
