@@ -11,8 +11,10 @@
 #     lumped B-spline mass, seen as the error of the fitted frequency: the
 #     order must be at least 1.8 (a first-order bug, e.g. a wrong wall
 #     mirror, fails). The max v_cm error is printed too; it levels off at
-#     ~0.5 % where the half-step lag of explicit velocities (w dt / 2) and
-#     the start-up take over.
+#     ~0.4-0.5 %: the finite amplitude (V0 = 0.1, strain 1e-2: the
+#     finite-strain solver departs from the linear reference by 3.6e-3 of
+#     the amplitude) plus the half-step lag of the explicit velocities
+#     (w1 dt/2); benchmarks/accuracyCost/floorStudy.py, docs/accuracyCost.md.
 #  3. Restart: stopping at t = 25 and continuing to t = 50 reproduces the
 #     uninterrupted run to 1e-9 (every restart field is written).
 #------------------------------------------------------------------------------

@@ -29,15 +29,8 @@ for n in 48 96 48c; do
     c=$(copyTutorial multiphase/consolidation "consolidation$n")
     [ "$n" = 48c ] && sed -i 's/^massMatrix .*/massMatrix      consistent;/' "$c/constant/mpmProperties"
     if [ "$n" = 96 ]; then
-        h=$(resizeColumn "$c" 0.12 "$n" 0.1)
-        # hydrostatic initial p on the finer mesh
-        "$PY" - "$c/0/p" "$n" "$h" <<'PYEOF'
-import re, sys
-path, n, h = sys.argv[1], int(sys.argv[2]), float(sys.argv[3])
-vals = "\n".join("%.6g" % (9.81*(0.12 - (i + 0.5)*h)) for i in range(n))
-s = re.sub(r"List<scalar> \d+\s*\([^)]*\)", "List<scalar> %d\n(\n%s\n)" % (n, vals), open(path).read())
-open(path, "w").write(s)
-PYEOF
+        resizeColumn "$c" 0.12 "$n" 0.1 > /dev/null
+        "$PY" "$c/hydrostaticPressure.py" "$c"   # hydrostatic initial p on the finer mesh
     fi
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
         || { echo "FAIL: run ($n cells)"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }

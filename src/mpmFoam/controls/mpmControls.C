@@ -26,7 +26,8 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
             "shapeFunction", "transfer", "flipRatio", "stressUpdate",
             "massMatrix", "consistentMassIterations", "freezePositions",
             "logInterval", "threadMinLoopSize", "timeStep",
-            "materials", "walls", "coupling", "pointOutput", "diagnostics"
+            "materials", "walls", "coupling", "pointOutput", "diagnostics",
+            "accuracyFront"
         },
         "mpmProperties"
     );
@@ -64,6 +65,10 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
     step.freezePositions = d.getOrDefault<bool>("freezePositions", false);
     Info<< "    freezePositions " << step.freezePositions << nl;
     logInterval = label(readBounded(d, "logInterval", 1, 1, labelMax));
+    // The end-of-run log quotes the error this front measured for the case's
+    // configuration (bin/mpmAccuracyCost writes it)
+    accuracyFront = d.getOrDefault<fileName>("accuracyFront", accuracyFront);
+    Info<< "    accuracyFront " << accuracyFront << nl;
     // Loops over fewer points or nodes run on one OpenMP thread: a parallel
     // region costs a scheduler time slice when cores are shared (MPI ranks
     // plus threads). Lower it to thread small cases (tests do).

@@ -4,6 +4,7 @@
 #include "choice.H"
 #include "mpmControls.H"
 #include "completeTimes.H"
+#include "accuracyFrontLog.H"
 #include <cmath>
 
 namespace Foam
@@ -161,4 +162,5 @@ void Foam::mpmFoamModule::end()
         effects.append(coupling_->costs());
     }
     mpm_.summary(Info, effects);
+    reportExpectedError(Info, runTime, mpm_.controls().accuracyFront);
 }

@@ -5,6 +5,8 @@ v_cm(t) = (2 V0 / pi) cos(w1 t),  w1 = (pi / 2L) sqrt(E / rho).
 Prints the largest error relative to the amplitude 2 V0 / pi and writes
 axialBar.png. Usage: plotAxialBar.py [case] [--no-plot]
 """
+import os
+import re
 import sys
 
 import numpy as np
@@ -12,6 +14,12 @@ import numpy as np
 import mpmPost
 
 L, E, RHO, V0 = 25.0, 100.0, 1.0, 0.1
+
+
+def amplitude(case):
+    """V0 of the case's initial velocity (mpmSetParticlesDict amplitude)."""
+    text = open(os.path.join(case, "system", "mpmSetParticlesDict")).read()
+    return float(re.search(r"amplitude\s*\(\s*(\S+)", text).group(1))
 
 
 def exact_vcm(t):
@@ -42,6 +50,8 @@ def fit_frequency(t, v, w_guess):
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     case = args[0] if args else "."
+    global V0
+    V0 = amplitude(case)
     s = mpmPost.read_summary(case)
     t, v = s["time"], s["Ux"]
     amp = 2*V0/np.pi

@@ -1,0 +1,139 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# mpmAccuracyCost and the end-of-run "Expected error" line, on the axial bar
+# (tutorials/mpm/axialBar at V0 = 1e-6, 25 cells) with a 4-run sweep:
+# mass (lumped, consistent) x Courant (0.5, 0.05).
+#
+#  1. The printed Pareto front is exactly the set of runs of results.csv that
+#     no other run beats on both error and solver time (computed here from
+#     the CSV, independently of the tool).
+#  2. Lumped mass at Courant 0.05 is dominated: it takes 10x the steps of
+#     either run at Courant 0.5 (measured 3-5x their time) and its lumped-mass
+#     dispersion error (measured 4e-2) is the largest of the four (the
+#     explicit step's opposite dispersion offsets part of it at Courant 0.5:
+#     2e-3; consistent mass 5e-4; sampled every 100 steps as the tutorial
+#     logs): it must be left off the front.
+#  3. --results with a target between the errors: the recommendation is the
+#     cheapest run whose error meets the target (computed from the CSV).
+#  4. An unreachable target (1e-9): exit 2 and "no measured configuration
+#     reaches".
+#  5. mpmFoam in the case with its front (accuracyCost/results.csv): the
+#     Expected error line quotes the CSV's error of the matching run; for a
+#     configuration the sweep did not measure (Courant 0.3) it says none was
+#     measured; without a front it says none exists.
+#  6. Bad sweep dictionaries: an unknown keyword, a bad compare choice.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+
+c=$(copyTutorial mpm/axialBar bar)
+sed -i 's/amplitude  *([^)]*);/amplitude  (1e-6 0 0);/' "$c/system/mpmSetParticlesDict"
+sweep="$SCRATCH/sweepDict"
+cat > "$sweep" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object accuracyCostDict; }
+commands ( blockMesh mpmSetParticles mpmFoam );
+error
+{
+    name    "vcm error";
+    command "$MPMFOAM_PYTHON plotAxialBar.py --no-plot";
+    regex   "max \|v_cm - exact\| / \(2 V0/pi\) = (\S+)";
+}
+parameters
+{
+    mass    { values (lumped consistent); set ("constant/mpmProperties" massMatrix "{value}"); }
+    courant { values (0.5 0.05); set ("constant/mpmProperties" timeStep/courant "{value}"); }
+}
+jobs 2;
+DICT
+
+out=$(mpmAccuracyCost "$c" --sweep "$sweep" 2>&1); rc=$?
+echo "$out"
+csv="$c/accuracyCost/results.csv"
+check "mpmAccuracyCost ran (exit 0, no target)" "rc == 0" rc="$rc"
+check "4 runs, all ok" "n == 4" n="$(grep -c ',ok,' "$csv")"
+
+# 1. the front, independently: runs no other run dominates
+"$PY" - "$csv" > "$SCRATCH/front.expected" <<'PYEOF'
+import csv, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+rows = [r for r in rows if r["status"] == "ok"]
+def dom(q, r):
+    eq, tq, er, tr = float(q["error"]), float(q["solverTime"]), float(r["error"]), float(r["solverTime"])
+    return tq <= tr and eq <= er and (tq < tr or eq < er)
+for r in sorted(rows, key=lambda r: float(r["solverTime"])):
+    if not any(dom(q, r) for q in rows if q is not r):
+        print("mass %s, courant %s" % (r["mass"], r["courant"]))
+PYEOF
+echo "$out" | sed -n '/^Pareto front/,/^ *$/p' | sed -n 's/^ *[*!]* *[0-9.e+-]\{1,\} \{1,\}[0-9.]\{1,\}  //p' > "$SCRATCH/front.printed"
+echo "front computed here:"; cat "$SCRATCH/front.expected"
+if [ -s "$SCRATCH/front.expected" ] && diff -q "$SCRATCH/front.expected" "$SCRATCH/front.printed" > /dev/null; then
+    echo "PASS: printed front = the non-dominated runs of results.csv"
+else
+    echo "FAIL: printed front differs:"; cat "$SCRATCH/front.printed"; failures=$((failures + 1))
+fi
+# 2. the dominated run is off the front
+if grep -qx "mass lumped, courant 0.05" "$SCRATCH/front.printed"; then
+    echo "FAIL: lumped mass at Courant 0.05 (dominated) is on the front"; failures=$((failures + 1))
+else
+    echo "PASS: lumped mass at Courant 0.05 is left off the front (dominated)"
+fi
+
+# 3. budget: target between the errors -> the cheapest run meeting it
+read -r target expected <<< "$("$PY" - "$csv" <<'PYEOF'
+import csv, sys
+rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")) if r["status"] == "ok"]
+errs = sorted(float(r["error"]) for r in rows)
+target = (errs[1]*errs[2])**0.5            # two runs meet it, two do not
+best = min((r for r in rows if float(r["error"]) <= target), key=lambda r: float(r["solverTime"]))
+print("%.6g mass_%s,_courant_%s" % (target, best["mass"], best["courant"]))
+PYEOF
+)"
+bud=$(mpmAccuracyCost --results "$csv" --target "$target" 2>&1); rc=$?
+echo "$bud" | tail -3
+chosen=$(echo "$bud" | sed -n '/^Budget: the cheapest/{n;p}' | sed 's/^ *//; s/ /_/g')
+check "budget answers (exit 0) for target $target" "rc == 0" rc="$rc"
+if [ "$chosen" = "$expected" ]; then
+    echo "PASS: recommendation = the cheapest run with error <= $target ($chosen)"
+else
+    echo "FAIL: recommendation '$chosen', expected '$expected'"; failures=$((failures + 1))
+fi
+# 4. unreachable target
+expectFailure "target 1e-9 is reached by no measured configuration" \
+    "no measured configuration reaches error 1e-09" mpmAccuracyCost --results "$csv" --target 1e-9
+mpmAccuracyCost --results "$csv" --target 1e-9 > /dev/null 2>&1
+check "unreachable target: exit status 2" "rc == 2" rc="$?"
+
+# 5. the end-of-run log quotes the front
+sed -i 's/^massMatrix .*/massMatrix      consistent;/' "$c/constant/mpmProperties"
+sed -i 's/courant .*;/courant     0.5;/' "$c/constant/mpmProperties"
+(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+    || { echo "FAIL: run"; failures=$((failures + 1)); }
+line=$(grep "Expected error" "$c/log.mpmFoam"); echo "$line"
+quoted=$(echo "$line" | sed -n 's/.*Expected error: \([0-9.eE+-]*\) .*/\1/p')
+csvErr=$("$PY" -c "
+import csv, sys
+for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#')):
+    if r['mass'] == 'consistent' and r['courant'] == '0.5': print(r['error'])" "$csv")
+check "Expected error = the CSV's error of consistent, Courant 0.5" "abs(a - b) <= 1e-5*b" a="${quoted:-nan}" b="${csvErr:-nan}"
+sed -i 's/courant .*;/courant     0.3;/' "$c/constant/mpmProperties"
+(cd "$c" && rm -rf [1-9]* && mpmFoam > log.mpmFoam 2>&1)
+if grep -q "Expected error: none measured for this configuration" "$c/log.mpmFoam"; then
+    echo "PASS: configuration not measured (Courant 0.3): $(grep 'Expected error' "$c/log.mpmFoam" | sed 's/^ *//')"
+else
+    echo "FAIL: unswept configuration"; grep "Expected error" "$c/log.mpmFoam"; failures=$((failures + 1))
+fi
+rm -rf "$c/accuracyCost"
+(cd "$c" && rm -rf [1-9]* && mpmFoam > log.mpmFoam 2>&1)
+if grep -q "Expected error: none (no accuracy front" "$c/log.mpmFoam"; then
+    echo "PASS: no front: $(grep 'Expected error' "$c/log.mpmFoam" | sed 's/^ *//')"
+else
+    echo "FAIL: no front"; grep "Expected error" "$c/log.mpmFoam"; failures=$((failures + 1))
+fi
+
+# 6. bad sweep dictionaries
+sed 's/^parameters/paramters/' "$sweep" > "$SCRATCH/bad1"
+expectFailure "unknown keyword in the sweep dictionary" "unknown keyword 'paramters'" \
+    mpmAccuracyCost "$c" --sweep "$SCRATCH/bad1"
+sed 's/name    "vcm error";/name "vcm error"; compare nearest;/' "$sweep" > "$SCRATCH/bad2"
+expectFailure "bad compare choice" "compare nearest; \}: valid choices: none reference value" \
+    mpmAccuracyCost "$c" --sweep "$SCRATCH/bad2"
+finish
