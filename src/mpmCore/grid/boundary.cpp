@@ -89,6 +89,7 @@ void Boundary::build
     periodicCopies_.clear();
     friction_.clear();
     inlet_.clear();
+    free_.clear();
     spec_ = spec;
     hasOpen_ = false;
     for (const auto& wc : spec.conditions) hasOpen_ = hasOpen_ || isOpen(wc.type);
@@ -162,6 +163,14 @@ void Boundary::build
         {
             // A free node beyond open faces only
             if (inletCondition >= 0) inlet_.push_back({B.node(i, j, k), inletCondition});
+            if (!decomposed || ownsCell(L.cellIndex(full[0], full[1], full[2])))
+            {
+                free_.emplace_back
+                (
+                    B.node(i, j, k),
+                    B.realNode(full[0] - offset[0], full[1] - offset[1], full[2] - offset[2])
+                );
+            }
             continue;
         }
         if (decomposed && !ownsCell(L.cellIndex(full[0], full[1], full[2]))) continue;

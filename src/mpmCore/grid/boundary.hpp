@@ -115,6 +115,10 @@ public:
     // Free nodes beyond inlet faces (every box node, owned or not: setting
     // the inlet velocity is the same on every rank)
     const std::vector<InletNode>& inletNodes() const { return inlet_; }
+    // Free nodes beyond open faces with their mirror image (a real node),
+    // listed where the image cell is owned: the fluid coupling's fields
+    // continue through an open face from the image (zero gradient).
+    const std::vector<std::pair<Index, Index>>& freeNodes() const { return free_; }
     // The specification it was built from (open faces, inlet velocities)
     const BoundarySpec& spec() const { return spec_; }
     // Whether any face is open (outlet or inlet)
@@ -128,6 +132,7 @@ private:
     std::vector<std::pair<Index, Index>> periodicCopies_;
     std::vector<FrictionNode> friction_;
     std::vector<InletNode> inlet_;
+    std::vector<std::pair<Index, Index>> free_;
     std::array<bool, 3> periodic_{false, false, false};
     BoundarySpec spec_;
     bool hasOpen_ = false;

@@ -501,9 +501,26 @@ void MpmSystem::nodalUpdate(Real dt)
 {
     const Index n = lattice_.nNodes;
     auto& g = grid_;
-    const auto& c = coupling_;
+    auto& c = coupling_;
     const bool coupled = c.active();
     const bool addedMass = coupled && c.addedMassDensity > 0;
+    if (coupled)
+    {
+        // Beyond an open face the fluid is the image cell's (zero
+        // gradient): the material leaving feels the drag per unit solid
+        // volume it felt inside (K = beta V_cell grows with the solid there)
+        for (const auto& fi : boundary_.freeNodes())
+        {
+            const Real Vi = g.volume[fi.second];
+            c.K[fi.first] = Vi > 0 ? c.K[fi.second]*g.volume[fi.first]/Vi : 0.0;
+            for (int d = 0; d < 3; ++d)
+            {
+                c.U[d][fi.first] = c.U[d][fi.second];
+                c.F[d][fi.first] = c.F[d][fi.second];
+                if (addedMass) c.fluidAcceleration[d][fi.first] = c.fluidAcceleration[d][fi.second];
+            }
+        }
+    }
     for (auto& a : nodeRhs_) a.resize(n);
     if (coupled) nodeDiag_.resize(n);
     // (M + D) v = p + dt f, with M lumped or consistent. Coupled, the drag

@@ -106,7 +106,13 @@ void Foam::openBoundaries::readInlet
         }
     }
     in.layer = layer;
-    in.pointVolume = lattice_.cellVolume()/(ppc.x()*ppc.y()*ppc.z());
+    // The same numbers on every processor (each rank's lattice spacing is
+    // its own cells', equal to round-off only): every rank then decides
+    // alike when a layer enters and gives its points the same mass.
+    in.pointVolume = returnReduce
+    (
+        lattice_.cellVolume()/(ppc.x()*ppc.y()*ppc.z()), maxOp<scalar>()
+    );
     in.pointMass = in.rho*in.pointVolume;
     in.layerVolume = in.layer.size()*in.pointVolume;
     const scalar spacing = L.h/ppc[a];
@@ -211,12 +217,16 @@ void Foam::openBoundaries::inject(mpm::MpmSystem& system, const scalar dt)
         }
         const scalar V0 = in.volumeIn, V1 = V0 + dV;
         in.volumeIn = V1;
-        while ((in.layers + 0.5)*in.layerVolume <= V1)
+        // A layer enters when the integral reaches its mid-volume. A rate
+        // that fills whole layers in whole steps (full density) reaches it
+        // exactly: a relative 1e-9 keeps round-off from moving the step.
+        const scalar tol = 1e-9*in.layerVolume;
+        while ((in.layers + 0.5)*in.layerVolume <= V1 + tol)
         {
             // The instant the layer's mid-volume entered, and how far the
             // material entering then has moved in since
             const scalar target = (in.layers + 0.5)*in.layerVolume;
-            const scalar tk = V1 > V0 ? t0 + dt*(target - V0)/(V1 - V0) : t1;
+            const scalar tk = V1 > V0 ? min(t0 + dt*(target - V0)/(V1 - V0), t1) : t1;
             const scalar depth = max(in.normalSpeed*(t1 - tk), 1e-6*L.h);
             forAll(in.layer, k)
             {
