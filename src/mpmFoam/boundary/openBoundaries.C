@@ -335,15 +335,18 @@ void Foam::openBoundaries::report(const mpm::MpmSystem& system, Ostream& os)
             << "Point count " << nPresent << " differs from the balance "
             << initialCount_ + inTotal - outTotal << endl;
     }
-    if (clamped > clampWarned_)
+    if (clamped > 0 && clampWarned_ == 0)
     {
-        // A point that would have crossed a wall was put back inside it:
-        // no loss, but a step too large for the material's speed.
+        // A point that would have crossed a wall was put back inside it: no
+        // loss, but a step too large for the material's speed there, or a
+        // wall next to an open face (the material turning the corner).
+        // Once per run; the count goes on in the balance line and file.
         WarningInFunction
-            << clamped - clampWarned_ << " material points crossed a wall "
+            << clamped << " material points crossed a wall "
             << "and were put back inside it by time " << mesh_.time().timeName()
-            << " (" << clamped << " in all): the step is too large for "
-            << "their speed near the wall" << endl;
+            << ": the step is too large for their speed near the wall, or "
+            << "they turn the corner of a wall and an open patch. Counted "
+            << "on ('clamped at walls' in the log, massBalance.dat)" << endl;
         clampWarned_ = clamped;
     }
     lastIn_ = injectedMass_;
