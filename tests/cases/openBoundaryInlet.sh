@@ -14,6 +14,9 @@
 #   - what leaves equals what enters once the stream reaches the outlet
 #     (0.5 < t < 0.6: 0.4 kg each, within a layer);
 #   - the balance, initial + injected - removed = present, on every step;
+#   - a restart from t = 0.4 (a whole number of layers in: the totals and
+#     the rate's integral start again there, docs/openBoundaries.md) ends
+#     with the uninterrupted run's cloud (same ids, positions to 1e-12);
 #   - bad inputs: an outward velocity, no flow rate or both, a wall keyword
 #     on an inlet, an inlet keyword on an outlet, a negative rate.
 #------------------------------------------------------------------------------
@@ -68,6 +71,16 @@ check "inlet to outlet: out = in over 0.5 < t < 0.6 (0.4 kg, within a layer)" \
     "abs(o - i) <= 0.04 + 1e-12 and abs(i - 0.4) <= 0.04 + 1e-12" o="$outLate" i="$inLate"
 check "balance: present = initial + injected - removed (count exact, mass to round-off) every step" \
     "bc == 0 and bm <= 1e-13" bc="$balCount" bm="$balMass"
+
+# Restart from a written time
+r="$SCRATCH/restart"
+cp -r "$c" "$r"; rm -rf "$r/0.6"
+(cd "$r" && mpmFoam > log.restart 2>&1) || { echo "FAIL: restart"; tail -20 "$r/log.restart"; failures=$((failures + 1)); }
+out=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$c" "$r" 0.6 --fields U)
+pos=$(echo "$out" | awk '$1=="positions"{print $2}'); same=$(echo "$out" | awk '$1=="ids"{print $3}')
+n=$(echo "$out" | awk '$1=="count"{print $2}')
+check "restart from t = 0.4: the cloud at 0.6 equals the uninterrupted run ($n points)" \
+    "same == 1 and pos <= 1e-12 and n == 800" same="${same:-0}" pos="${pos:-1}" n="${n:-0}"
 
 # Bad input
 BASE_CASE="$c"   # meshed and seeded; each variant drops its results
