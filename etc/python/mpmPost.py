@@ -26,6 +26,26 @@ def read_summary(case="."):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
+def read_open_boundary(case=".", name="massBalance"):
+    """Columns of postProcessing/openBoundaries/*/<name>.dat: an open patch's
+    flux table (name: the patch) or the mass balance (massBalance), named by
+    the file's header, restarts resolved in favour of the later run."""
+    rows, names = [], None
+    for f in sorted(glob.glob(os.path.join(case, "postProcessing", "openBoundaries", "*", name + ".dat")),
+                    key=lambda p: float(os.path.basename(os.path.dirname(p)))):
+        with open(f) as fh:
+            header = [l for l in fh if l.startswith("# time")]
+        names = header[-1][1:].split()
+        d = np.loadtxt(f, comments="#", ndmin=2)
+        if rows:
+            rows = [r[r[:, 0] < d[0, 0]] for r in rows]
+        rows.append(d)
+    if names is None:
+        raise FileNotFoundError("no postProcessing/openBoundaries/*/%s.dat in %s" % (name, case))
+    data = np.vstack(rows)
+    return {n: data[:, i] for i, n in enumerate(names)}
+
+
 def _time_dirs(case, has):
     """Time directories (strings, ascending) for which has(path) is true."""
     out = []

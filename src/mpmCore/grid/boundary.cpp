@@ -1,4 +1,6 @@
 #include "boundary.hpp"
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace mpm {
@@ -10,20 +12,23 @@ const char* wallTypeName(WallType t)
         case WallType::noSlip: return "noSlip";
         case WallType::slip: return "slip";
         case WallType::friction: return "friction";
+        case WallType::outlet: return "outlet";
+        case WallType::inlet: return "inlet";
         default: return "periodic";
     }
 }
 
 bool parseWallType(const std::string& name, WallType& t)
 {
-    for (auto c : {WallType::noSlip, WallType::slip, WallType::friction, WallType::periodic})
+    for (auto c : {WallType::noSlip, WallType::slip, WallType::friction, WallType::periodic,
+                   WallType::outlet, WallType::inlet})
     {
         if (name == wallTypeName(c)) { t = c; return true; }
     }
     return false;
 }
 
-const char* validWallTypeNames() { return "noSlip slip friction periodic"; }
+const char* validWallTypeNames() { return "noSlip slip friction periodic outlet inlet"; }
 
 int BoundarySpec::conditionAt(const Lattice& L, int side, int i, int j, int k) const
 {
@@ -34,6 +39,18 @@ int BoundarySpec::conditionAt(const Lattice& L, int side, int i, int j, int k) c
     const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
     const int lo = a1 < a2 ? a1 : a2, hi = a1 < a2 ? a2 : a1;
     return fc[std::size_t(r[lo]) + std::size_t(L.nCells[lo])*std::size_t(r[hi])];
+}
+
+int BoundarySpec::conditionAtPosition(const Lattice& L, int side, const Real x[3]) const
+{
+    int r[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!L.solved[a]) continue;
+        const long c = long(std::floor((x[a] - L.origin[a])/L.h));
+        r[a] = int(std::min<long>(std::max<long>(c, 0), L.nCells[a] - 1));
+    }
+    return conditionAt(L, side, r[0], r[1], r[2]);
 }
 
 std::array<bool, 3> Boundary::periodicAxes(const Lattice& L, const BoundarySpec& spec)
@@ -71,6 +88,11 @@ void Boundary::build
     ghosts_.clear();
     periodicCopies_.clear();
     friction_.clear();
+    inlet_.clear();
+    free_.clear();
+    spec_ = spec;
+    hasOpen_ = false;
+    for (const auto& wc : spec.conditions) hasOpen_ = hasOpen_ || isOpen(wc.type);
     periodic_ = periodicAxes(L, spec);
     const bool decomposed = bool(ownsCell);
 
@@ -99,15 +121,22 @@ void Boundary::build
             continue;
         }
         // A wall ghost: reflect each out-of-range solved coordinate in turn.
-        bool isGhost = false;
+        // Across an open face (outlet, inlet) nothing is reflected: the node
+        // is free along that axis (the lattice continues through the face).
+        bool beyond = false, isGhost = false;
+        int inletCondition = -1;
         std::array<Real, 3> sign{1, 1, 1};
         int reflections = 0, unilateralAxis = -1;
         Real outward = 0;
+        // Every out-of-range coordinate reflected, open or not: the real
+        // cell whose owner folds this node (decomposed runs), as the
+        // Subdomain decides the node's owner.
+        int full[3] = {r[0], r[1], r[2]};
         for (int a = 0; a < 3; ++a)
         {
             const int n = L.nCells[a];
             if (!L.solved[a] || (r[a] >= 0 && r[a] < n)) continue;
-            isGhost = true;
+            beyond = true;
             const bool low = r[a] < 0;
             // The face this ghost lies across: other coordinates clamped.
             int f[3] = {r[0], r[1], r[2]};
@@ -115,16 +144,40 @@ void Boundary::build
             {
                 f[b] = f[b] < 0 ? 0 : (f[b] >= L.nCells[b] ? L.nCells[b] - 1 : f[b]);
             }
-            const auto& wc = spec.conditions.at(spec.conditionAt(L, 2*a + (low ? 0 : 1), f[0], f[1], f[2]));
-            r[a] = low ? -1 - r[a] : 2*n - 1 - r[a];
+            const int ci = spec.conditionAt(L, 2*a + (low ? 0 : 1), f[0], f[1], f[2]);
+            const auto& wc = spec.conditions.at(ci);
+            full[a] = low ? -1 - r[a] : 2*n - 1 - r[a];
+            if (isOpen(wc.type))
+            {
+                if (wc.type == WallType::inlet) inletCondition = ci;
+                continue;
+            }
+            isGhost = true;
+            r[a] = full[a];
             ++reflections;
             if (wc.type == WallType::noSlip) { for (auto& s : sign) s = -s; }
             else { sign[a] = -sign[a]; unilateralAxis = a; outward = low ? -1 : 1; }
         }
-        if (!isGhost) continue;
-        if (decomposed && !ownsCell(L.cellIndex(r[0], r[1], r[2]))) continue;
+        if (!beyond) continue;
+        if (!isGhost)
+        {
+            // A free node beyond open faces only
+            if (inletCondition >= 0) inlet_.push_back({B.node(i, j, k), inletCondition});
+            if (!decomposed || ownsCell(L.cellIndex(full[0], full[1], full[2])))
+            {
+                free_.emplace_back
+                (
+                    B.node(i, j, k),
+                    B.realNode(full[0] - offset[0], full[1] - offset[1], full[2] - offset[2])
+                );
+            }
+            continue;
+        }
+        if (decomposed && !ownsCell(L.cellIndex(full[0], full[1], full[2]))) continue;
         // Corner ghosts (two or more reflections) stay bilateral.
         if (reflections != 1) unilateralAxis = -1;
+        // The image: a real node, or a free node beyond an open face when
+        // the ghost lies beyond a wall and an open face at once (a corner)
         const Index image = B.realNode(r[0] - offset[0], r[1] - offset[1], r[2] - offset[2]);
         ghosts_.push_back
         (

@@ -16,6 +16,13 @@
 // normal direction (contact is decided per node and step), so bodies can
 // leave a wall; noSlip walls hold the material (sticky). See
 // docs/gridDesign.md.
+//
+// Open faces (outlet, inlet) have no mirror: the ghost layers beyond them
+// are free nodes, updated like real ones, so the lattice continues through
+// the face and the material there feels no wall (zero traction). A point
+// that crosses an open face leaves the domain (MpmSystem removes it and
+// counts it). Beyond an inlet face the free nodes carrying material get the
+// inlet velocity (a Dirichlet band the stencils read). docs/openBoundaries.md.
 #pragma once
 #include "lattice.hpp"
 #include <array>
@@ -26,7 +33,10 @@
 
 namespace mpm {
 
-enum class WallType { noSlip = 0, slip = 1, friction = 2, periodic = 3 };
+enum class WallType { noSlip = 0, slip = 1, friction = 2, periodic = 3, outlet = 4, inlet = 5 };
+
+// Open faces: material passes through them (no mirror ghost)
+inline bool isOpen(WallType t) { return t == WallType::outlet || t == WallType::inlet; }
 
 const char* wallTypeName(WallType t);
 bool parseWallType(const std::string& name, WallType& t);
@@ -36,6 +46,7 @@ struct WallCondition
 {
     WallType type = WallType::noSlip;
     Real frictionCoefficient = 0;   // Coulomb mu, for WallType::friction
+    std::array<Real, 3> velocity{0, 0, 0};   // for WallType::inlet
 };
 
 // Which condition each boundary face has. Sides are x-, x+, y-, y+, z-, z+.
@@ -48,6 +59,10 @@ struct BoundarySpec
     std::array<std::vector<int>, 6> faceCondition;
 
     int conditionAt(const Lattice& L, int side, int i, int j, int k) const;
+
+    // The condition of the face a position beyond `side` crosses: the
+    // other coordinates taken to their real cell (clamped into the box).
+    int conditionAtPosition(const Lattice& L, int side, const Real x[3]) const;
 };
 
 // Precomputed ghost-to-image map and first-layer friction nodes.
@@ -67,6 +82,8 @@ public:
         Real outward = 0;
     };
     struct FrictionNode { Index node; int axis; Real outward; Real mu; };
+    // A free node beyond an inlet face and its inlet's condition index
+    struct InletNode { Index node; int condition; };
 
     void build(const Lattice& L, const BoundarySpec& spec);
 
@@ -95,6 +112,17 @@ public:
     // leave them to the Subdomain's halo, which does the same across ranks.
     const std::vector<std::pair<Index, Index>>& periodicCopies() const { return periodicCopies_; }
     const std::vector<FrictionNode>& frictionNodes() const { return friction_; }
+    // Free nodes beyond inlet faces (every box node, owned or not: setting
+    // the inlet velocity is the same on every rank)
+    const std::vector<InletNode>& inletNodes() const { return inlet_; }
+    // Free nodes beyond open faces with their mirror image (a real node),
+    // listed where the image cell is owned: the fluid coupling's fields
+    // continue through an open face from the image (zero gradient).
+    const std::vector<std::pair<Index, Index>>& freeNodes() const { return free_; }
+    // The specification it was built from (open faces, inlet velocities)
+    const BoundarySpec& spec() const { return spec_; }
+    // Whether any face is open (outlet or inlet)
+    bool hasOpenFaces() const { return hasOpen_; }
 
     // Whether the side is periodic (for wrapping positions).
     bool periodic(int axis) const { return periodic_[axis]; }
@@ -103,7 +131,11 @@ private:
     std::vector<Ghost> ghosts_;
     std::vector<std::pair<Index, Index>> periodicCopies_;
     std::vector<FrictionNode> friction_;
+    std::vector<InletNode> inlet_;
+    std::vector<std::pair<Index, Index>> free_;
     std::array<bool, 3> periodic_{false, false, false};
+    BoundarySpec spec_;
+    bool hasOpen_ = false;
 };
 
 } // namespace mpm

@@ -30,6 +30,9 @@ void MpmSystem::setup
         boundary_.build(lattice_, spec);
     }
     options_ = options;
+    removedCount_.assign(spec.conditions.size(), 0);
+    removedMass_.assign(spec.conditions.size(), 0.0);
+    clamped_ = 0;
     // Gravity along unsolved directions has nothing to act on.
     for (int a = 0; a < 3; ++a) if (!lattice_.solved[a]) options_.gravity[a] = 0;
     grid_.resize(lattice_.nNodes);
@@ -457,6 +460,15 @@ void MpmSystem::fillGhosts(std::array<std::vector<Real>, 3>& v) const
         const auto& gh = ghosts[k];
         for (int d = 0; d < 3; ++d) v[d][gh.ghost] = ghostSign_[k][d]*v[d][gh.image];
     }
+    // Free nodes beyond an inlet carry the inlet velocity. Only those with
+    // material: a node without is outside the active region, which must
+    // stay zero (and no stencil with weight reads it).
+    const auto& conditions = boundary_.spec().conditions;
+    for (const auto& in : boundary_.inletNodes())
+    {
+        if (grid_.mass[in.node] <= massTolerance_) continue;
+        for (int d = 0; d < 3; ++d) v[d][in.node] = conditions[in.condition].velocity[d];
+    }
     copyHalo({v[0].data(), v[1].data(), v[2].data()});
 }
 
@@ -489,9 +501,26 @@ void MpmSystem::nodalUpdate(Real dt)
 {
     const Index n = lattice_.nNodes;
     auto& g = grid_;
-    const auto& c = coupling_;
+    auto& c = coupling_;
     const bool coupled = c.active();
     const bool addedMass = coupled && c.addedMassDensity > 0;
+    if (coupled)
+    {
+        // Beyond an open face the fluid is the image cell's (zero
+        // gradient): the material leaving feels the drag per unit solid
+        // volume it felt inside (K = beta V_cell grows with the solid there)
+        for (const auto& fi : boundary_.freeNodes())
+        {
+            const Real Vi = g.volume[fi.second];
+            c.K[fi.first] = Vi > 0 ? c.K[fi.second]*g.volume[fi.first]/Vi : 0.0;
+            for (int d = 0; d < 3; ++d)
+            {
+                c.U[d][fi.first] = c.U[d][fi.second];
+                c.F[d][fi.first] = c.F[d][fi.second];
+                if (addedMass) c.fluidAcceleration[d][fi.first] = c.fluidAcceleration[d][fi.second];
+            }
+        }
+    }
     for (auto& a : nodeRhs_) a.resize(n);
     if (coupled) nodeDiag_.resize(n);
     // (M + D) v = p + dt f, with M lumped or consistent. Coupled, the drag
@@ -779,37 +808,82 @@ void MpmSystem::stopIfNonFinite(Index firstBad, const char* what)
 }
 
 // Moves every point by the displacement G2P stored (dt already in it).
+// A point that crosses an open face leaves the domain and is removed; one
+// that would cross a wall is put back just inside it, and counted.
 void MpmSystem::movePoints()
 {
     auto& P = particles_;
     const Lattice& L = domain_;   // walls and periodicity are the domain's
+    const BoundarySpec& spec = boundary_.spec();
     const Index n = P.size();
     Index firstBad = n;
+    Index clamped = 0, leaving = 0;
     const bool frozen = options_.freezePositions;
-    #pragma omp parallel for schedule(static) reduction(min:firstBad) if(worthThreads(n))
+    const bool open = boundary_.hasOpenFaces();
+    leaving_.assign(open ? n : 0, -1);
+    #pragma omp parallel for schedule(static) reduction(min:firstBad) reduction(+:clamped, leaving) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
+        Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
+        bool bad = false;
         for (int a = 0; a < 3; ++a)
         {
-            if (!std::isfinite(P.v[a][p]) || !std::isfinite(dx_[a][p])) { firstBad = std::min(firstBad, p); continue; }
+            if (!std::isfinite(P.v[a][p]) || !std::isfinite(dx_[a][p])) { bad = true; continue; }
             if (frozen || !L.solved[a]) continue;
-            Real x = P.x[a][p] + dx_[a][p];
-            const Real lo = L.origin[a], len = L.length(a);
+            x[a] += dx_[a][p];
             if (boundary_.periodic(a))
             {
-                x = lo + std::fmod(std::fmod(x - lo, len) + len, len);
+                const Real lo = L.origin[a], len = L.length(a);
+                x[a] = lo + std::fmod(std::fmod(x[a] - lo, len) + len, len);
             }
-            else
-            {
-                // A wall is impenetrable: a point that would cross it stops
-                // just inside (a large step, not normal operation).
-                const Real eps = 1e-9*L.h;
-                x = std::min(std::max(x, lo + eps), lo + len - eps);
-            }
-            P.x[a][p] = x;
+        }
+        if (bad) { firstBad = std::min(firstBad, p); continue; }
+        if (frozen) continue;
+        // Which faces the new position lies beyond: an open one lets the
+        // point out (the first such axis names the face), walls hold it.
+        int through = -1;
+        bool beyondWall = false;
+        for (int a = 0; a < 3 && through < 0; ++a)
+        {
+            if (!L.solved[a] || boundary_.periodic(a)) continue;
+            const Real lo = L.origin[a], hi = lo + L.length(a);
+            if (x[a] >= lo && x[a] < hi) continue;
+            const int c = spec.conditionAtPosition(L, 2*a + (x[a] < lo ? 0 : 1), x);
+            if (isOpen(spec.conditions[c].type)) through = c;
+            else beyondWall = beyondWall || x[a] < lo || x[a] > hi;
+        }
+        if (through >= 0)
+        {
+            leaving_[p] = through;
+            ++leaving;
+            continue;
+        }
+        clamped += beyondWall;
+        for (int a = 0; a < 3; ++a)
+        {
+            if (!L.solved[a] || boundary_.periodic(a)) { P.x[a][p] = x[a]; continue; }
+            // A wall is impenetrable: a point that would cross it stops
+            // just inside (a large step, not normal operation).
+            const Real lo = L.origin[a], len = L.length(a);
+            const Real eps = 1e-9*L.h;
+            P.x[a][p] = std::min(std::max(x[a], lo + eps), lo + len - eps);
         }
     }
     stopIfNonFinite(firstBad, "velocity");
+    clamped_ += clamped;
+    if (leaving == 0) return;
+    // In index order, serially: the removed sums do not depend on threads
+    std::vector<Index> out;
+    out.reserve(leaving);
+    for (Index p = 0; p < n; ++p)
+    {
+        const int c = leaving_[p];
+        if (c < 0) continue;
+        out.push_back(p);
+        ++removedCount_[c];
+        removedMass_[c] += P.mass[p];
+    }
+    P.remove(out);
 }
 
 Index MpmSystem::migrate()

@@ -163,6 +163,16 @@ public:
     // Number of points outside the domain (seeding checks), on this rank.
     Index countOutside() const;
 
+    // Open boundaries (grid/boundary.hpp): a point that crosses an open
+    // face (outlet or inlet) is removed right after it moves. Per boundary
+    // condition (index into the BoundarySpec's conditions): the count and
+    // mass removed on this rank since setup. A point that would cross a
+    // wall face is put back just inside it instead (a step far too large):
+    // counted too, so that clamping can never hide a loss.
+    const std::vector<Index>& removedCount() const { return removedCount_; }
+    const std::vector<Real>& removedMass() const { return removedMass_; }
+    Index clampedCount() const { return clamped_; }
+
 private:
     template<class K, int D> void stepImpl(Real dt);
     // P2G; massMomentum (a fresh P2G) must come right after binPoints()
@@ -224,6 +234,11 @@ private:
     Index migrated_ = 0;
     InvertedPoints inverted_;
     Real massTolerance_ = 0;
+    std::vector<Index> removedCount_;
+    std::vector<Real> removedMass_;
+    Index clamped_ = 0;
+    // Per point during movePoints: the open condition it left through, or -1
+    std::vector<int> leaving_;
 
     // Scratch per point: velocity gradient and displacement over the step.
     std::array<std::vector<Real>, 9> L_;

@@ -32,10 +32,17 @@ void checkWallEntries(const fvMesh& mesh, const dictionary& walls)
     {
         const keyType& key = e.keyword();
         if (key[0] == '#' || key[0] == '$') continue;
+        // Each type its own keywords: a flow rate on a wall, or a friction
+        // coefficient on an inlet, would otherwise be silently ignored.
+        const word type(e.dict().getOrDefault<word>("type", "noSlip"));
+        const wordList wallKeys{"type", "frictionCoefficient"};
         checkKeywords
         (
-            e.dict(), {"type", "frictionCoefficient"},
-            "wall " + std::string(key)
+            e.dict(),
+            type == "inlet" ? inletKeywords()
+          : type == "outlet" ? wordList{"type"} : wallKeys,
+            (type == "inlet" || type == "outlet" ? type + " " : word("wall "))
+          + std::string(key)
         );
         bool matched = false;
         for (const word& p : patches) matched = matched || key.match(p);
@@ -57,11 +64,24 @@ void checkWallEntries(const fvMesh& mesh, const dictionary& walls)
 } // namespace
 
 
+const Foam::wordList& Foam::inletKeywords()
+{
+    static const wordList keys
+    {
+        "type", "velocity", "material", "pointsPerCell",
+        "massFlowRate", "volumeFlowRate",
+        "massFlowRateCoeffs", "volumeFlowRateCoeffs"
+    };
+    return keys;
+}
+
+
 mpm::BoundarySpec Foam::readWallConditions
 (
     const fvMesh& mesh,
     const meshLattice& ml,
-    const dictionary& mpmDict
+    const dictionary& mpmDict,
+    wordList& conditionPatch
 )
 {
     const mpm::Lattice& L = ml.lattice();
@@ -69,6 +89,7 @@ mpm::BoundarySpec Foam::readWallConditions
     checkWallEntries(mesh, walls);
     mpm::BoundarySpec spec;
     spec.conditions.clear();
+    DynamicList<word> names;
 
     for (int side = 0; side < 6; ++side)
     {
@@ -130,10 +151,28 @@ mpm::BoundarySpec Foam::readWallConditions
                     wc.frictionCoefficient =
                         readBounded(d, "frictionCoefficient", 0, 0, GREAT);
                 }
+                if (wc.type == mpm::WallType::inlet)
+                {
+                    // The velocity of the entering material, imposed on the
+                    // lattice beyond the face (its direction is checked
+                    // against the face by openBoundaries)
+                    if (!d.found("velocity"))
+                    {
+                        FatalIOErrorInFunction(d)
+                            << "Missing keyword velocity for the inlet "
+                            << pp.name() << " (the entering material's "
+                            << "velocity, a vector pointing into the domain)"
+                            << exit(FatalIOError);
+                    }
+                    const vector U(d.get<vector>("velocity"));
+                    Info<< "        velocity " << U << nl;
+                    for (direction c = 0; c < 3; ++c) wc.velocity[c] = U[c];
+                }
             }
         }
         patchCondition[pp.index()] = label(spec.conditions.size());
         spec.conditions.push_back(wc);
+        names.append(pp.name());
     }
 
     for (const polyPatch& pp : mesh.boundaryMesh())
@@ -192,5 +231,6 @@ mpm::BoundarySpec Foam::readWallConditions
             }
         }
     }
+    conditionPatch = names;
     return spec;
 }

@@ -38,7 +38,8 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     checkTimeComplete(mesh.time());
     lattice_.report(Info);
     suspendPoolThreadTraps();
-    const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_));
+    wordList conditionPatch;
+    const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_, conditionPatch));
     system_.setup(lattice_.lattice(), walls, controls_.step, decompose(walls));
     for (label m = 0; m < materials_.size(); ++m)
     {
@@ -81,6 +82,10 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     {
         FatalErrorInFunction << e.what() << exit(FatalError);
     }
+    open_.reset
+    (
+        new openBoundaries(mesh, lattice_, dict_, materials_, walls, conditionPatch, system_)
+    );
     Info<< "Material points: " << returnReduce(label(P.size()), sumOp<label>())
         << ", OpenMP threads: " << omp_get_max_threads();
     if (Pstream::parRun()) Info<< " per processor, processors: " << Pstream::nProcs();
@@ -258,6 +263,9 @@ void Foam::mpmModel::evolve(scalar dt)
             << exit(FatalError);
     }
     stopIfInverted(system_.inverted(), materials_.names(), label(system_.stepCount()), mesh_.time());
+    // The inlets' layers that entered during the step (after the points
+    // moved and those beyond an open face left)
+    open_->inject(system_, dt);
     ++steps_;
 }
 
@@ -303,6 +311,7 @@ void Foam::mpmModel::report(Ostream& os)
         diagnostics_[i].report(os);
     }
     reportBalance(os);
+    open_->report(system_, os);
 }
 
 void Foam::mpmModel::summary

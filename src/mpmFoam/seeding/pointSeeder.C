@@ -206,6 +206,35 @@ void reportTotals
 
 } // namespace
 
+Foam::Vector<Foam::label> Foam::readPointsPerCell
+(
+    const dictionary& d,
+    const mpm::Lattice& L
+)
+{
+    Vector<label> ppc(1, 1, 1);
+    const entry* pe = d.findEntry("pointsPerCell", keyType::LITERAL);
+    if (!pe)
+    {
+        FatalIOErrorInFunction(d)
+            << "Missing keyword pointsPerCell (a count per direction, "
+            << "e.g. 2 or (2 2 1))" << exit(FatalIOError);
+    }
+    if (pe->stream()[0].isPunctuation()) ppc = d.get<Vector<label>>("pointsPerCell");
+    else ppc = Vector<label>::uniform(d.get<label>("pointsPerCell"));
+    for (direction a = 0; a < 3; ++a)
+    {
+        if (!L.solved[a]) ppc[a] = 1;
+        if (ppc[a] < 1 || ppc[a] > 10)
+        {
+            FatalIOErrorInFunction(d)
+                << "pointsPerCell " << ppc << " must be between 1 and 10"
+                << exit(FatalIOError);
+        }
+    }
+    return ppc;
+}
+
 Foam::label Foam::seedRegions
 (
     const fvMesh& mesh,
@@ -287,26 +316,7 @@ Foam::label Foam::seedRegions
         }
 
         const label mat = materials.index(d.get<word>("material"), d);
-        Vector<label> ppc(1, 1, 1);
-        const entry* pe = d.findEntry("pointsPerCell", keyType::LITERAL);
-        if (!pe)
-        {
-            FatalIOErrorInFunction(d)
-                << "Missing keyword pointsPerCell (a count per direction, "
-                << "e.g. 2 or (2 2 1))" << exit(FatalIOError);
-        }
-        if (pe->stream()[0].isPunctuation()) ppc = d.get<Vector<label>>("pointsPerCell");
-        else ppc = Vector<label>::uniform(d.get<label>("pointsPerCell"));
-        for (direction a = 0; a < 3; ++a)
-        {
-            if (!L.solved[a]) ppc[a] = 1;
-            if (ppc[a] < 1 || ppc[a] > 10)
-            {
-                FatalIOErrorInFunction(d)
-                    << "pointsPerCell " << ppc << " must be between 1 and 10"
-                    << exit(FatalIOError);
-            }
-        }
+        const Vector<label> ppc(readPointsPerCell(d, L));
         // Shift of the sub-cell pattern, as a fraction of a cell: lets
         // analysis runs place points anywhere relative to the lattice nodes
         // (which sit at cell centres).

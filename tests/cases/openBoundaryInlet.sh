@@ -1,0 +1,107 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Inlet (tests/cases/openBoundaryCases/inletStream): a stream enters through
+# the top at U = 1 m/s, massFlowRate table ((0 0) (0.1 4) (1 4)) [kg/s]
+# (4 kg/s = rho U A: full density), 2 points per cell, and leaves through a
+# bottom outlet behind a block moving at 1 m/s; no gravity. Checked:
+#   - injected mass against the integral of the rate,
+#       I(t) = 20 t^2 (t <= 0.1), 0.2 + 4 (t - 0.1) (t > 0.1),
+#     within half a layer (0.02 kg) on every step, whole layers only;
+#   - each injected point where the material entering at its layer's
+#     mid-volume instant t_k (I(t_k) = (k + 1/2) layer mass) has moved:
+#     y = 0.4 - U (t - t_k), at the written times (the stream keeps the
+#     inlet velocity, its layers h/2 apart at full density);
+#   - what leaves equals what enters once the stream reaches the outlet
+#     (0.5 < t < 0.6: 0.4 kg each, within a layer);
+#   - the balance, initial + injected - removed = present, on every step;
+#   - a restart from t = 0.4 (a whole number of layers in: the totals and
+#     the rate's integral start again there, docs/openBoundaries.md) ends
+#     with the uninterrupted run's cloud (same ids, positions to 1e-12);
+#   - bad inputs: an outward velocity, no flow rate or both, a wall keyword
+#     on an inlet, an inlet keyword on an outlet, a negative rate.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+
+CASES="$MPMFOAM_ROOT/tests/cases/openBoundaryCases"
+c="$SCRATCH/inletStream"
+cp -r "$CASES/inletStream" "$c"
+(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
+    && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: inletStream run"; tail -20 "$c/log.mpmFoam"; exit 1; }
+
+res=$("$PY" - "$c" <<'PYEOF'
+import sys
+import numpy as np, mpmPost
+c = sys.argv[1]
+U, H, layerMass, perLayer, firstId = 1.0, 0.4, 0.04, 20, 200
+I = lambda t: np.where(t <= 0.1, 20*t*t, 0.2 + 4*(t - 0.1))
+def tOf(m):   # inverse of I
+    return np.sqrt(m/20) if m <= 0.2 else 0.1 + (m - 0.2)/4
+top = mpmPost.read_open_boundary(c, "top")
+out = mpmPost.read_open_boundary(c, "bottom")
+bal = mpmPost.read_open_boundary(c, "massBalance")
+t = top["time"]
+dev = np.abs(top["injectedMass"] - I(t)).max()
+whole = int((top["injectedPoints"] % perLayer != 0).sum())
+layers = int(top["injectedPoints"][-1]//perLayer)
+posErr, n = 0.0, 0
+for tw in mpmPost.times(c)[1:]:
+    T = float(tw)
+    ids = mpmPost.read_cloud_field(c, tw, "pointId").astype(int)
+    y = mpmPost.read_positions(c, tw)[:, 1]
+    s = ids >= firstId
+    k = (ids[s] - firstId)//perLayer
+    tk = np.array([tOf((kk + 0.5)*layerMass) for kk in k])
+    posErr = max(posErr, np.abs(y[s] - (H - U*(T - tk))).max())
+    n += s.sum()
+a, b = np.argmin(np.abs(t - 0.5)), len(t) - 1
+inLate = top["injectedMass"][b] - top["injectedMass"][a]
+outLate = out["removedMass"][b] - out["removedMass"][a]
+balCount = int((bal["presentPoints"] != bal["initialPoints"] + bal["injectedPoints"] - bal["removedPoints"]).sum())
+balMass = np.abs(bal["massError"]).max()/bal["initialMass"][0]
+print(len(t), dev, whole, layers, posErr, n, inLate, outLate, balCount, balMass, top["injectedMass"][-1], float(I(t[-1])))
+PYEOF
+)
+read -r rows dev whole layers posErr n inLate outLate balCount balMass injEnd intEnd <<< "$res"
+echo "    injected at t = 0.6: $injEnd kg ($layers layers), integral of the rate $intEnd kg"
+check "inlet: injected mass within half a layer (0.02 kg) of the rate's integral on every step ($rows), whole layers" \
+    "rows >= 600 and dev <= 0.02 + 1e-12 and whole == 0 and layers == 55" rows="$rows" dev="$dev" whole="$whole" layers="$layers"
+check "inlet: injected points at y = 0.4 - U (t - t_k) at the written times ($n points)" \
+    "n > 500 and e <= 1e-5" n="$n" e="$posErr"
+check "inlet to outlet: out = in over 0.5 < t < 0.6 (0.4 kg, within a layer)" \
+    "abs(o - i) <= 0.04 + 1e-12 and abs(i - 0.4) <= 0.04 + 1e-12" o="$outLate" i="$inLate"
+check "balance: present = initial + injected - removed (count exact, mass to round-off) every step" \
+    "bc == 0 and bm <= 1e-13" bc="$balCount" bm="$balMass"
+
+# Restart from a written time
+r="$SCRATCH/restart"
+cp -r "$c" "$r"; rm -rf "$r/0.6"
+(cd "$r" && mpmFoam > log.restart 2>&1) || { echo "FAIL: restart"; tail -20 "$r/log.restart"; failures=$((failures + 1)); }
+out=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$c" "$r" 0.6 --fields U)
+pos=$(echo "$out" | awk '$1=="positions"{print $2}'); same=$(echo "$out" | awk '$1=="ids"{print $3}')
+n=$(echo "$out" | awk '$1=="count"{print $2}')
+check "restart from t = 0.4: the cloud at 0.6 equals the uninterrupted run ($n points)" \
+    "same == 1 and pos <= 1e-12 and n == 800" same="${same:-0}" pos="${pos:-1}" n="${n:-0}"
+
+# Bad input
+BASE_CASE="$c"   # meshed and seeded; each variant drops its results
+bad() { local v; v=$(freshCopy "$1"); rm -rf "$v"/0.* "$v"/postProcessing; echo "$v"; }
+v=$(bad outward); sed -i 's/velocity      (0 -1 0);/velocity (0 1 0);/' "$(props "$v")"
+expectFailure "inlet velocity pointing out of the domain" "velocity \(0 1 0\) does not point into the domain" runIn "$v" mpmFoam
+v=$(bad noRate); sed -i '/massFlowRate/d' "$(props "$v")"
+expectFailure "inlet without a flow rate" "needs exactly one of massFlowRate \[kg/s\] and volumeFlowRate" runIn "$v" mpmFoam
+v=$(bad twoRates); sed -i 's/massFlowRate  table/volumeFlowRate constant 1; massFlowRate table/' "$(props "$v")"
+expectFailure "inlet with both flow rates" "needs exactly one of massFlowRate" runIn "$v" mpmFoam
+v=$(bad noVelocity); sed -i '/velocity      (0 -1 0);/d' "$(props "$v")"
+expectFailure "inlet without a velocity" "Missing keyword velocity for the inlet top" runIn "$v" mpmFoam
+v=$(bad wallKeyword); sed -i 's/pointsPerCell 2;/pointsPerCell 2; frictionCoefficient 0.3;/' "$(props "$v")"
+expectFailure "friction coefficient on an inlet" "Unknown keyword 'frictionCoefficient' in inlet top" runIn "$v" mpmFoam
+v=$(bad outletKeyword); sed -i 's/bottom          { type outlet; }/bottom { type outlet; massFlowRate constant 1; }/' "$(props "$v")"
+expectFailure "flow rate on an outlet" "Unknown keyword 'massFlowRate' in outlet bottom" runIn "$v" mpmFoam
+v=$(bad badType); sed -i 's/type outlet;/type outflow;/' "$(props "$v")"
+expectFailure "unknown open type" "Unknown type 'outflow'.*|Valid type choices: noSlip slip friction periodic outlet inlet" runIn "$v" mpmFoam
+v=$(bad negative); sed -i 's/massFlowRate  table ((0 0) (0.1 4) (1 4));/massFlowRate constant -1;/' "$(props "$v")"
+expectFailure "negative flow rate" "flow rate of the inlet top is negative" runIn "$v" mpmFoam
+v=$(bad badMaterial); sed -i 's/material      stream;/material sand;/' "$(props "$v")"
+expectFailure "inlet of an unknown material" "sand" runIn "$v" mpmFoam
+
+finish
