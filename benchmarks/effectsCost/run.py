@@ -57,7 +57,7 @@ VARIANTS = [
     ("+ pressure gradient", "+ volume fraction", {FORCES: "(drag pressureGradient gravity)"}),
     ("+ virtual mass", "+ pressure gradient", {FORCES: "(drag pressureGradient gravity virtualMass)"}),
     ("+ diagnostic summary", "+ virtual mass", {"diagnostics": "(summary)"}),
-    ("+ diagnostic massBalance", "+ virtual mass", {"diagnostics": "(massBalance)"}),
+    ("+ diagnostic materialTotals", "+ virtual mass", {"diagnostics": "(materialTotals)"}),
 ]
 
 

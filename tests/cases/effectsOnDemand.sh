@@ -4,9 +4,9 @@
 # (run-time-selected plug-ins), and the end-of-run cost breakdown names each
 # selected one and no other.
 #  - coupled packedBed, forces (drag pressureGradient), diagnostics
-#    (summary massBalance): the breakdown has exactly "force drag", "force
-#    pressureGradient", "diagnostic summary", "diagnostic massBalance"; the
-#    massBalance table has a row per fluid step, with the seeded points and
+#    (summary materialTotals): the breakdown has exactly "force drag", "force
+#    pressureGradient", "diagnostic summary", "diagnostic materialTotals"; the
+#    materialTotals table has a row per fluid step, with the seeded points and
 #    mass (the sum over 0/lagrangian) on every row;
 #  - the same with forces (drag) and diagnostics (): no pressure-gradient
 #    cost, no energy line, no postProcessing/mpmSummary, and a different
@@ -19,7 +19,7 @@ c=$(copyTutorial multiphase/packedBed packedBed)
 (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) || { echo "FAIL: set-up"; exit 1; }
 sed -i 's/^endTime .*/endTime 0.2;/; s/^writeInterval .*/writeInterval 0.2;/' "$c/system/controlDict"
 d=$(cp -r "$c" "$SCRATCH/fewer" && echo "$SCRATCH/fewer")
-sed -i 's/^logInterval .*/logInterval 1;\ndiagnostics (summary massBalance);/' "$(props "$c")"
+sed -i 's/^logInterval .*/logInterval 1;\ndiagnostics (summary materialTotals);/' "$(props "$c")"
 sed -i 's/^logInterval .*/logInterval 1;\ndiagnostics ();/; s/^\( *forces *\).*/\1(drag);/' "$(props "$d")"
 
 runIn "$c" mpmFoam > "$c/log.mpmFoam" 2>&1 || { echo "FAIL: run with every force and diagnostic"; tail -20 "$c/log.mpmFoam"; exit 1; }
@@ -28,7 +28,7 @@ runIn "$d" mpmFoam > "$d/log.mpmFoam" 2>&1 || { echo "FAIL: run with drag only, 
 # The named lines of the cost breakdown (after "Cost breakdown:")
 costs() { sed -n '/Cost breakdown:/,/^$/p' "$1/log.mpmFoam" | grep -oE "(force|diagnostic) [A-Za-z]+" | sort | tr '\n' ' '; }
 a=$(costs "$c"); b=$(costs "$d")
-if [ "$a" = "diagnostic massBalance diagnostic summary force drag force pressureGradient " ]; then
+if [ "$a" = "diagnostic materialTotals diagnostic summary force drag force pressureGradient " ]; then
     echo "PASS: the cost breakdown names each selected effect: $a"
 else
     echo "FAIL: cost breakdown effects: '$a'"; failures=$((failures + 1))
@@ -49,10 +49,10 @@ print(m.size, repr(float(m.sum())))
 PYEOF
 )
 read -r nSeed mSeed <<< "$seeded"
-table="$c/postProcessing/massBalance/0/massBalance.dat"
+table="$c/postProcessing/materialTotals/0/materialTotals.dat"
 rows=$(grep -vc "^#" "$table")
 bad=$(awk -v n="$nSeed" -v m="$mSeed" '!/^#/ && ($2 != n || ($3 - m)^2 > (1e-12*m)^2) {b++} END {print b+0}' "$table")
-check "massBalance: a row at the start and per fluid step (10), each with the seeded $nSeed points and mass $mSeed" \
+check "materialTotals: a row at the start and per fluid step (10), each with the seeded $nSeed points and mass $mSeed" \
     "r == 11 and b == 0" r="$rows" b="$bad"
 
 # The pressure gradient acted: the two runs differ
@@ -65,7 +65,7 @@ PYEOF
 e=$(cp -r "$d" "$SCRATCH/unknown" && echo "$SCRATCH/unknown")
 sed -i 's/^diagnostics .*/diagnostics (summary energy);/' "$(props "$e")"
 expectFailure "unknown diagnostic" "Unknown diagnostic 'energy' in diagnostics" runIn "$e" mpmFoam
-expectFailure "unknown diagnostic lists the valid ones" "Valid diagnostics: massBalance summary" runIn "$e" mpmFoam
+expectFailure "unknown diagnostic lists the valid ones" "Valid diagnostics: materialTotals summary" runIn "$e" mpmFoam
 sed -i 's/^diagnostics .*/diagnostics (summary summary);/' "$(props "$e")"
 expectFailure "repeated diagnostic" "Diagnostic 'summary' listed twice in diagnostics" runIn "$e" mpmFoam
 

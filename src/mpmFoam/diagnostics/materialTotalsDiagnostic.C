@@ -1,14 +1,14 @@
-#include "massBalanceDiagnostic.H"
+#include "materialTotalsDiagnostic.H"
 #include "mpmModel.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
 {
-    defineTypeNameAndDebug(massBalanceDiagnostic, 0);
-    addToRunTimeSelectionTable(mpmDiagnostic, massBalanceDiagnostic, dictionary);
+    defineTypeNameAndDebug(materialTotalsDiagnostic, 0);
+    addToRunTimeSelectionTable(mpmDiagnostic, materialTotalsDiagnostic, dictionary);
 }
 
-void Foam::massBalanceDiagnostic::report(Ostream& log)
+void Foam::materialTotalsDiagnostic::report(Ostream& log)
 {
     const mpm::Particles& P = mpm_.system().particles();
     const wordList& names = mpm_.materials().names();
@@ -37,7 +37,7 @@ void Foam::massBalanceDiagnostic::report(Ostream& log)
 
     string header("# time points mass");
     for (const word& n : names) header += " points_" + n + " mass_" + n;
-    OFstream& os = file("massBalance", header + "\n");
+    OFstream& os = file("materialTotals", header + "\n");
     os << mpm_.mesh().time().value() << ' ' << sum(count) << ' ' << sum(mass);
     forAll(names, m) os << ' ' << count[m] << ' ' << mass[m];
     os << endl;
