@@ -21,7 +21,6 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     lattice_(mesh),
     materials_(dict_),
     controls_(mesh, dict_),
-    courantLimit_(analysedCourantLimit(controls_.step)),
     alphaSolid_
     (
         IOobject("alpha.solid", mesh.time().timeName(), mesh,
@@ -178,24 +177,44 @@ void Foam::mpmModel::reportBalance(Ostream& os) const
         << nl;
 }
 
+const Foam::stableCourant& Foam::mpmModel::analysedLimit() const
+{
+    if (!courantLimitKnown_)
+    {
+        courantLimit_ = analysedCourantLimit(controls_.step);
+        courantLimitKnown_ = true;
+        if (courantLimit_.limit > 0)
+        {
+            Info<< "Stable Courant number " << courantLimit_.limit << " ("
+                << courantLimit_.description.c_str() << ")" << nl;
+        }
+        else
+        {
+            Info<< "Stable Courant number: not analysed ("
+                << courantLimit_.description.c_str() << "); steps are "
+                << "checked against 1" << nl;
+        }
+    }
+    return courantLimit_;
+}
+
 Foam::scalar Foam::mpmModel::courantLimit() const
 {
-    return courantLimit_.limit > 0 ? courantLimit_.limit : 1;
+    const scalar limit = analysedLimit().limit;
+    return limit > 0 ? limit : 1;
 }
 
 void Foam::mpmModel::reportCourantLimit() const
 {
-    if (courantLimit_.limit > 0)
+    if (controls_.adaptive && controls_.courant <= belowEveryAnalysedCourant)
     {
-        Info<< "Stable Courant number " << courantLimit_.limit << " ("
-            << courantLimit_.description.c_str() << ")" << nl;
+        Info<< "Stable Courant number: not needed (timeStep courant "
+            << controls_.courant << " is below " << belowEveryAnalysedCourant
+            << ", under every analysed limit; a fixed step above it is checked)"
+            << nl;
+        return;
     }
-    else
-    {
-        Info<< "Stable Courant number: not analysed ("
-            << courantLimit_.description.c_str() << "); fixed steps are "
-            << "checked against 1" << nl;
-    }
+    analysedLimit();   // logs it
     if (controls_.adaptive && controls_.courant > courantLimit())
     {
         WarningInFunction
@@ -210,7 +229,8 @@ void Foam::mpmModel::reportCourantLimit() const
 void Foam::mpmModel::warnIfAboveCourantLimit(scalar dt, const char* source) const
 {
     const scalar Co = courantNumber(dt);
-    if (Co <= courantLimit()) return;
+    // Below every analysed limit: no need to know this algorithm's
+    if (Co <= belowEveryAnalysedCourant || Co <= courantLimit()) return;
     // Kept for the stop message, should the run then fail
     maxCourantAboveLimit_ = max(maxCourantAboveLimit_, Co);
     if (courantWarned_) return;
@@ -252,7 +272,7 @@ Foam::scalar Foam::mpmModel::deltaT() const
 std::string Foam::mpmModel::stopAdvice() const
 {
     std::ostringstream os;
-    if (maxCourantAboveLimit_ > 0)
+    if (maxCourantAboveLimit_ > 0)   // the limit is then known
     {
         os  << "\nThe step's Courant number reached " << maxCourantAboveLimit_
             << ", above the stable limit " << courantLimit() << " of this "

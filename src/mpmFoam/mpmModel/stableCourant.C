@@ -27,11 +27,19 @@ Foam::stableCourant Foam::analysedCourantLimit(const mpm::StepOptions& o)
       : o.stressUpdate == mpm::StressUpdate::MUSL ? st::StressUpdate::MUSL
       : st::StressUpdate::USL;
     s.offsets = {0};
-    // The offsets of docs/stabilityAnalysis.md's "limit vs offset" table
+    // The offsets of docs/stabilityAnalysis.md's "limit vs offset" table,
+    // (i + 0.5)/20. The kernels are symmetric, so offsets o and 1 - o have
+    // the same limit: the first half is enough.
     const int nShift = 20;
     std::vector<mpm::Real> shifts;
-    for (int i = 0; i < nShift; ++i) shifts.push_back((i + 0.5)/nShift);
-    const auto limits = st::limitVersusShift(s, shifts, st::defaultLimitOptions(s.model));
+    for (int i = 0; i < nShift/2; ++i) shifts.push_back((i + 0.5)/nShift);
+    // The tool's search, with a coarser scan (steps of 0.04 instead of 0.01,
+    // still far finer than the stable interval) and bisection to 1e-9: the
+    // same limit to the printed digits, 6x cheaper (start-up cost).
+    st::LimitOptions options = st::defaultLimitOptions(s.model);
+    options.scanPoints = 100;
+    options.relTolerance = 1e-9;
+    const auto limits = st::limitVersusShift(s, shifts, options);
     result.limit = limits.front().second.limit;
     for (const auto& l : limits) result.limit = std::min(result.limit, scalar(l.second.limit));
 
