@@ -26,7 +26,8 @@ void Foam::summaryDiagnostic::report(Ostream& log)
         "# time kineticEnergy elasticEnergy Ucm_x Ucm_y Ucm_z maxU potentialEnergy\n"
         "# elasticEnergy: stored energy of each law (strain energy,"
         " complementary energy, fluid compression energy)\n"
-        "# potentialEnergy: -sum m g.x (gravity; origin at x = 0)\n"
+        "# potentialEnergy: -sum m g.x (gravity; origin at x = 0)\n",
+        "summary.dat"   // the documented name, read by mpmPost.read_summary
     )
         << mpm_.mesh().time().value() << ' ' << e.kinetic << ' ' << e.stored << ' '
         << vcm.x() << ' ' << vcm.y() << ' ' << vcm.z() << ' '
