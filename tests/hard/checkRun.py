@@ -2,6 +2,7 @@
 """The stress suite's shared checks on one finished (or stopped) run.
 
     checkRun.py CASE [--log log.mpmFoam] [--energy-growth G] [--energy-source S]
+                [--energy-window P]
                 [--alpha-max A] [--expect-stop REGEX] [--removed N]
 
 Asserts, printing PASS/FAIL with the measured figure:
