@@ -22,8 +22,8 @@ def read_summary(case="."):
             rows = [r[r[:, 0] < d[0, 0]] for r in rows]
         rows.append(d)
     data = np.vstack(rows)
-    names = ["time", "kineticEnergy", "elasticEnergy", "Ux", "Uy", "Uz", "maxU"]
-    return {n: data[:, i] for i, n in enumerate(names)}
+    names = ["time", "kineticEnergy", "elasticEnergy", "Ux", "Uy", "Uz", "maxU", "potentialEnergy"]
+    return {n: data[:, i] for i, n in enumerate(names) if i < data.shape[1]}
 
 
 def read_open_boundary(case=".", name="massBalance"):

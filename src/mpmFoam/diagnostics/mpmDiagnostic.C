@@ -31,7 +31,12 @@ Foam::autoPtr<Foam::mpmDiagnostic> Foam::mpmDiagnostic::New
     return cstrIter()(mpm, mpmDict);
 }
 
-Foam::OFstream& Foam::mpmDiagnostic::file(const word& name, const string& header)
+Foam::OFstream& Foam::mpmDiagnostic::file
+(
+    const word& name,
+    const string& header,
+    const word& fileNameInDir
+)
 {
     if (!file_.valid())
     {
@@ -42,7 +47,7 @@ Foam::OFstream& Foam::mpmDiagnostic::file(const word& name, const string& header
            /runTime.timeName(runTime.startTime().value())
         );
         mkDir(dir);
-        file_.reset(new OFstream(dir/(name + ".dat")));
+        file_.reset(new OFstream(dir/(fileNameInDir.empty() ? word(name + ".dat") : fileNameInDir)));
         file_() << header.c_str();
         file_().precision(12);
     }

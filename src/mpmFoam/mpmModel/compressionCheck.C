@@ -6,7 +6,8 @@ void Foam::stopIfInverted
     const mpm::MpmSystem::InvertedPoints& local,
     const wordList& materialNames,
     label step,
-    const Time& runTime
+    const Time& runTime,
+    const std::string& advice
 )
 {
     const label nBad = returnReduce(label(local.count), sumOp<label>());
@@ -34,6 +35,6 @@ void Foam::stopIfInverted
         << " step (timeStep { type adaptive; courant 0.5; } or a smaller"
         << " controlDict deltaT), or the impact velocity; a finer mesh with"
         << " more points per cell also helps. The last written time can be"
-        << " restarted with the new settings."
+        << " restarted with the new settings." << advice.c_str()
         << exit(FatalError);
 }

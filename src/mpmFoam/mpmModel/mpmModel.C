@@ -4,6 +4,7 @@
 #include "clockTime.H"
 #include "floatingPointTraps.H"
 #include "compressionCheck.H"
+#include <sstream>
 #include "completeTimes.H"
 #include <omp.h>
 #include <cstring>
@@ -37,6 +38,7 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     // fail with a parse error, or give points whose fields disagree
     checkTimeComplete(mesh.time());
     lattice_.report(Info);
+    reportCourantLimit();
     suspendPoolThreadTraps();
     wordList conditionPatch;
     const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_, conditionPatch));
@@ -180,25 +182,76 @@ void Foam::mpmModel::reportBalance(Ostream& os) const
         << nl;
 }
 
+const Foam::stableCourant& Foam::mpmModel::analysedLimit() const
+{
+    if (!courantLimitKnown_)
+    {
+        courantLimit_ = analysedCourantLimit(controls_.step);
+        courantLimitKnown_ = true;
+        if (courantLimit_.limit > 0)
+        {
+            Info<< "Stable Courant number " << courantLimit_.limit << " ("
+                << courantLimit_.description.c_str() << ")" << nl;
+        }
+        else
+        {
+            Info<< "Stable Courant number: not analysed ("
+                << courantLimit_.description.c_str() << "); steps are "
+                << "checked against 1" << nl;
+        }
+    }
+    return courantLimit_;
+}
+
+Foam::scalar Foam::mpmModel::courantLimit() const
+{
+    const scalar limit = analysedLimit().limit;
+    return limit > 0 ? limit : 1;
+}
+
+void Foam::mpmModel::reportCourantLimit() const
+{
+    if (controls_.adaptive && controls_.courant <= belowEveryAnalysedCourant)
+    {
+        Info<< "Stable Courant number: not needed (timeStep courant "
+            << controls_.courant << " is below " << belowEveryAnalysedCourant
+            << ", under every analysed limit; a fixed step above it is checked)"
+            << nl;
+        return;
+    }
+    analysedLimit();   // logs it
+    if (controls_.adaptive && controls_.courant > courantLimit())
+    {
+        WarningInFunction
+            << "timeStep courant " << controls_.courant << " is above the "
+            << "stable Courant number " << courantLimit() << " of this "
+            << "algorithm (" << courantLimit_.description.c_str() << "): "
+            << "use timeStep { courant " << 0.5*courantLimit() << "; }"
+            << endl;
+    }
+}
+
 void Foam::mpmModel::warnIfAboveCourantLimit(scalar dt, const char* source) const
 {
-    if (courantWarned_) return;
     const scalar Co = courantNumber(dt);
-    if (Co > 1)
-    {
-        // Once per run: the explicit update is unstable above ~1 (the
-        // analysed limits, docs/stabilityAnalysis.md, are 0.7-2.7 by shape
-        // function and stress update); the run itself will tell.
-        courantWarned_ = true;
-        WarningInFunction
-            << "The MPM step " << dt << " set by " << source << " gives "
-            << "Courant number " << Co << " > 1 at time "
-            << mesh_.time().timeName() << " (signal speed "
-            << system_.maxSignalSpeed() << ", h " << lattice_.lattice().h
-            << "). Explicit MPM is unstable above ~1 (docs/"
-            << "stabilityAnalysis.md); timeStep { type adaptive; courant 0.5; }"
-            << " keeps it stable." << endl;
-    }
+    // Below every analysed limit: no need to know this algorithm's
+    if (Co <= belowEveryAnalysedCourant || Co <= courantLimit()) return;
+    // Kept for the stop message, should the run then fail
+    maxCourantAboveLimit_ = max(maxCourantAboveLimit_, Co);
+    if (courantWarned_) return;
+    // Once per run: the explicit update is unstable above the analysed
+    // limit (docs/stabilityAnalysis.md); the run itself will tell.
+    courantWarned_ = true;
+    WarningInFunction
+        << "The MPM step " << dt << " set by " << source << " gives "
+        << "Courant number " << Co << " > " << courantLimit()
+        << ", the stable limit of this algorithm ("
+        << courantLimit_.description.c_str() << "), at time "
+        << mesh_.time().timeName() << " (signal speed "
+        << system_.maxSignalSpeed() << ", h " << lattice_.lattice().h
+        << "). Explicit MPM is unstable above it: use a step <= "
+        << dt*courantLimit()/Co << ", or timeStep { type adaptive; courant "
+        << 0.5*courantLimit() << "; } (docs/stabilityAnalysis.md)." << endl;
 }
 
 Foam::scalar Foam::mpmModel::deltaT() const
@@ -219,6 +272,25 @@ Foam::scalar Foam::mpmModel::deltaT() const
             << " or stress is no longer finite" << exit(FatalError);
     }
     return dt;
+}
+
+std::string Foam::mpmModel::stopAdvice() const
+{
+    std::ostringstream os;
+    if (maxCourantAboveLimit_ > 0)   // the limit is then known
+    {
+        os  << "\nThe step's Courant number reached " << maxCourantAboveLimit_
+            << ", above the stable limit " << courantLimit() << " of this "
+            << "algorithm (" << courantLimit_.description << ").";
+    }
+    if (controls_.step.shape == mpm::ShapeKind::linearHat)
+    {
+        os  << "\nWith linear hats the internal force jumps whenever a point "
+            << "crosses a cell face (grid-crossing error), which a hard case "
+            << "turns into an instability: shapeFunction cubicBSpline (or "
+            << "quadraticBSpline) avoids it.";
+    }
+    return os.str();
 }
 
 Foam::scalar Foam::mpmModel::courantNumber(scalar dt) const
@@ -252,7 +324,7 @@ void Foam::mpmModel::evolve(scalar dt)
             << what.c_str() << nl
             << "Nothing was written for this time. Reduce the time step "
             << "(timeStep courant) or check the material coefficients."
-            << exit(FatalError);
+            << stopAdvice().c_str() << exit(FatalError);
     }
     catch (const std::runtime_error& e)
     {
@@ -262,7 +334,11 @@ void Foam::mpmModel::evolve(scalar dt)
             << e.what() << nl << "Nothing was written for this time."
             << exit(FatalError);
     }
-    stopIfInverted(system_.inverted(), materials_.names(), label(system_.stepCount()), mesh_.time());
+    stopIfInverted
+    (
+        system_.inverted(), materials_.names(), label(system_.stepCount()),
+        mesh_.time(), stopAdvice()
+    );
     // The inlets' layers that entered during the step (after the points
     // moved and those beyond an open face left)
     open_->inject(system_, dt);
