@@ -11,7 +11,7 @@ seededCopy mpm/axialBar
 c=$(freshCopy unknownModel)
 sed -i 's/model   linearElastic;/model   linearElastik;/' "$(props "$c")"
 expectFailure "unknown model" "Unknown model 'linearElastik'" runIn "$c" mpmFoam
-expectFailure "unknown model lists valid models" "Valid models: linearElastic, neoHookean, newtonianFluid, druckerPrager, dilute" runIn "$c" mpmFoam
+expectFailure "unknown model lists valid models" "Valid models: linearElastic, neoHookean, newtonianFluid, druckerPrager, muIRheology, dilute" runIn "$c" mpmFoam
 expectFailure "unknown model names the file" "constant/mpmProperties" runIn "$c" mpmFoam
 
 c=$(freshCopy missingCoefficient)
