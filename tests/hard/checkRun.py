@@ -26,6 +26,7 @@ Asserts, printing PASS/FAIL with the measured figure:
   - with --alpha-max: the solid fraction the fluid sees, 1 - alpha.fluid, is
     <= alphaMax in every written field (and the raw lattice alpha.solid's max
     is reported).
+The case must be written in ASCII (writeFormat ascii).
 Last line: "figures: name=value ..." for the report.
 """
 import argparse
