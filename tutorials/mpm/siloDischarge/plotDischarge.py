@@ -97,7 +97,12 @@ def main():
     cases = args or sorted(glob.glob("runs/*"))
     cases = [c for c in cases if os.path.isdir(os.path.join(c, "postProcessing", "openBoundaries"))]
     # The fluid's rate has no plateau to wait for: its window runs to the end
-    runs = [analyse(c, hmin=0 if fluid(c) else 2) for c in cases]
+    runs = []
+    for c in cases:
+        try:
+            runs.append(analyse(c, hmin=0 if fluid(c) else 2))
+        except (IndexError, ValueError):
+            print("%s: no steady window yet (a run not past t = 0.4 s), left out" % c)
     sand = sorted([r for r in runs if not fluid(r["case"])], key=lambda r: r["D"])
     water = [r for r in runs if fluid(r["case"])]
     print("rho %g, g %g; rates per unit thickness [kg/(m s)]; H: mean fill height [m]" % (RHO, G))
@@ -140,6 +145,18 @@ def main():
               "C = W/(rho sqrt(g) (D - delta)^1.5) = %s, mean %.3f"
               % (delta, delta/h, nd, " ".join("%.3f" % c for c in Cd), Cd.mean()))
         fits[h] = (D, W, n, lnA, nd, lnAd, delta)
+    # The slot resolved (D/h >= 10: C no longer grows with D/h, see the
+    # resolution lines below), whatever the cell size: the exponent
+    resolved = sorted([r for r in sand if r["D"]/cell(r) >= 10 - 1e-9], key=lambda r: r["D"])
+    resolvedFit = None
+    if len(set(r["D"] for r in resolved)) >= 3:
+        D = np.array([r["D"] for r in resolved]); W = np.array([r["W"] for r in resolved])
+        n, lnA = np.polyfit(np.log(D), np.log(W), 1)
+        C = W/(RHO*np.sqrt(G)*D**1.5)
+        resolvedFit = (n, lnA)
+        print("resolved slots (D/h >= 10): %s; W ~ D^%.3f (k d = 0); C = %s, mean %.3f"
+              % (" ".join("D = %g (h = %g)" % (r["D"], cell(r)) for r in resolved), n,
+                 " ".join("%.3f" % c for c in C), C.mean()))
     for Dv in sorted(set(r["D"] for r in sand)):
         same = sorted([r for r in sand if r["D"] == Dv], key=cell, reverse=True)
         if len(same) > 1:
@@ -187,6 +204,10 @@ def main():
                 ok = Ds > delta
                 ax.loglog(Ds[ok], np.exp(lnAd)*(Ds[ok] - delta)**nd, "-", color=line.get_color(),
                           label="  fit: W ~ (D - %.1f h)^%.2f" % (delta/h, nd))
+        if resolvedFit:
+            n, lnA = resolvedFit
+            ax.loglog(Ds, np.exp(lnA)*Ds**n, "r-", lw=2, alpha=0.5,
+                      label="fit, slots resolved (D/h >= 10): W ~ D^%.2f" % n)
         ax.loglog(Ds, 1.03*RHO*np.sqrt(G)*Ds**1.5, "k--", label="Beverloo 2D, C = 1.03, k d = 0")
         ax.set_xlabel("slot width D [m]"); ax.set_ylabel("W [kg/(m s)]")
         ax.grid(alpha=0.3, which="both"); ax.legend(fontsize=7)
