@@ -164,8 +164,8 @@ ComplexMatrix coupledSymbol(const CoupledSetup& c, Real theta)
     for (int corr = 0; corr < c.pisoCorrectors; ++corr)
     {
         const RowVec HbyA = rAU*H(U);
-        // ddtCorr(U, phi) with the coupling coefficient 1 (Euler, Dt = 1)
-        const RowVec phiHbyA = cf*HbyA + aF*rAU*(phi0 - cf*U0) + phiForces;
+        // ddtCorr(U, phi) (Euler, Dt = 1)
+        const RowVec phiHbyA = cf*HbyA + c.ddtCorrCoefficient*aF*rAU*(phi0 - cf*U0) + phiForces;
         // laplacian(aF^2 rAU, p) = div(aF phiHbyA) + div(aS_f flux(Us))
         p = -I*(aF*phiHbyA + aSf*cf*Us)/(sg*aF*aF*rAU);
         phi = phiHbyA - aF*rAU*(I*sg)*p;

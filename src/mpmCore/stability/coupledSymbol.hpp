@@ -16,7 +16,7 @@
 //    predictor): Euler ddt, implicit drag, laminar viscous terms (implicit
 //    Laplacian + explicit dev2 part), Gauss linear gradients, linear
 //    interpolation, the flux-reconstructed cell velocity, ddtCorr with its
-//    coupling coefficient taken as 1 (see the docs for what that costs),
+//    coupling coefficient (ddtCorrCoefficient, 1 by default: see below),
 //    and the mixture continuity div(aF phi) + div(aS_f Us_f) = 0 with Us
 //    the solid's grid velocity averaged over the sub-steps.
 // The lumped mass only (the product's consistent mass is an approximate
@@ -53,6 +53,12 @@ struct CoupledSetup
     Real viscousNumber = 0;         // nu Dt/h^2 of the fluid
     int pisoCorrectors = 3;         // PIMPLE nCorrectors
     bool momentumPredictor = true;
+    // OpenFOAM's Euler ddtCorr multiplies (phi^n - flux(U^n))/Dt by
+    // 1 - min(|phi^n - flux(U^n)|/|phi^n|, 1) per face: scale-free but not
+    // linear. For one real mode the ratio is uniform and real, ~ sin^2(kh/2)
+    // times the pressure's share of the flux; the linear analysis takes 1
+    // (its limit), a comparison with a run may pass the state's value.
+    Real ddtCorrCoefficient = 1;
 
     int stateSize() const { return solid.stateSize() + 3; }
     Real alphaF() const { return 1 - alphaS; }
