@@ -40,6 +40,7 @@ struct CoupledOptions
     LimitOptions limitOptions;
     Range mapDt, mapAlpha;
     Real symbolKh = -1;          // --symbol: print the matrix at this kh
+    Real limitKh = -1;           // --limit-kh: the limit of this kh only
 };
 
 void usage()
@@ -70,7 +71,7 @@ void usage()
 "  --csv file                    rho(kh) of every combination\n"
 "  --limit dtOverTau|alphaS|number|densityRatio|viscousNumber [--max-number x]\n"
 "        [--theta-intervals n]   largest stable value (scan + bisection), every combination\n"
-"  --limit-csv file\n"
+"  --limit-csv file  --limit-kh kh (the limit of this kh only, e.g. a run's mode)\n"
 "  --symbol kh                   print the amplification matrix at kh (state v_p.., [s_p..], U, phi, p;\n"
 "                                one row per line, re im pairs; first combination)\n"
 "  --map-dt-tau lo:hi:n --map-aS lo:hi:n --map-csv file\n"
@@ -163,6 +164,7 @@ CoupledOptions parse(int argc, char** argv)
             o.limit = true;
         }
         else if (a == "--limit-csv") o.limitCsv = next();
+        else if (a == "--limit-kh") o.limitKh = toReal(next());
         else if (a == "--max-number") { o.limitOptions.maxNumber = toReal(next()); maxSet = true; }
         else if (a == "--theta-intervals") o.limitOptions.thetaIntervals = int(toReal(next()));
         else if (a == "--symbol") o.symbolKh = toReal(next());
@@ -267,13 +269,23 @@ void runLimits(const CoupledOptions& o)
         csv.precision(16);
     }
     const bool inDt = o.limitParameter == CoupledParameter::dtOverTau;
-    std::printf("\nStability limits in %s (max over kh = pi j/%d of rho <= 1 + %g, searched in (0, %g])\n",
-                parameterName(o.limitParameter), o.limitOptions.thetaIntervals, o.limitOptions.slack,
-                o.limitOptions.maxNumber);
+    if (o.limitKh > 0)
+        std::printf("\nStability limits in %s (rho(kh = %.17g) <= 1 + %g, searched in (0, %g])\n",
+                    parameterName(o.limitParameter), o.limitKh, o.limitOptions.slack, o.limitOptions.maxNumber);
+    else
+        std::printf("\nStability limits in %s (max over kh = pi j/%d of rho <= 1 + %g, searched in (0, %g])\n",
+                    parameterName(o.limitParameter), o.limitOptions.thetaIntervals, o.limitOptions.slack,
+                    o.limitOptions.maxNumber);
     for (const CoupledSetup& c : combinations(o, !inDt))
     {
-        const StabilityLimit L = coupledStabilityLimit(c, o.limitParameter, o.limitOptions);
-        std::printf("%-15s %-11s %s limit %s%.8g\n", couplingModeName(c.mode), dragVariantName(c.variant),
+        const StabilityLimit L = o.limitKh > 0
+            ? stabilityLimit([&](Real x) {
+                  CoupledSetup t = c;
+                  setParameter(t, o.limitParameter, x);
+                  return coupledSpectralRadius(t, o.limitKh) <= 1 + o.limitOptions.slack;
+              }, o.limitOptions)
+            : coupledStabilityLimit(c, o.limitParameter, o.limitOptions);
+        std::printf("%-15s %-11s %s limit %s%.12g\n", couplingModeName(c.mode), dragVariantName(c.variant),
                     inDt ? "" : ("Dt/tau=" + std::to_string(c.dtOverTau)).c_str(),
                     L.reachedMax ? ">= " : "", L.limit);
         if (csv) csv << fields(c) << ',' << (inDt ? -1.0 : c.dtOverTau) << ',' << parameterName(o.limitParameter)

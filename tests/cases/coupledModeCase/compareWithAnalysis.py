@@ -26,7 +26,7 @@ by ~|phiCorr/phi| (6e-4 at kh = 2 pi/128) of the correction, but not the
 face flux, whence the grains' drag and the amplification: --fluid-tol.
 
 Usage: compareWithAnalysis.py <case> <tool> [--tol 1e-6] [--fluid-tol 1e-5]
-       [--cutoff 1e-6] [--variant linearised]
+       [--cutoff 1e-6] [--variant linearised|frozen (default: the case's fluidResponse)]
 Steps are compared while the mode is above cutoff of its start. Exits 1 if
 a one-step difference exceeds its tolerance (tol: g, v, phi; fluid-tol: U, p).
 """
@@ -69,7 +69,11 @@ def main():
     tol = float(option("--tol", 1e-6))
     fluid_tol = float(option("--fluid-tol", 1e-5))
     cutoff = float(option("--cutoff", 1e-6))
-    variant = option("--variant", "linearised")
+    try:    # the solver's fluidResponse (an analysis aid) is the variant
+        variant = value(os.path.join(case, "constant", "mpmProperties"), "fluidResponse")
+    except KeyError:
+        variant = "linearised"
+    variant = option("--variant", variant)
     mpm = os.path.join(case, "constant", "mpmProperties")
     shape = {"linearHat": "LH", "quadraticBSpline": "QBS", "cubicBSpline": "CBS"}[value(mpm, "shapeFunction")]
     alpha = float(value(mpm, "flipRatio"))
@@ -150,6 +154,7 @@ def main():
     worst = {"g": 0.0, "v": 0.0, "U": 0.0, "phi": 0.0, "p": 0.0}
     worst_history = 0.0
     hist = xs[0].copy()
+    last = 0
     print(f"{'step':>4} {'|v|/|v0|':>10} {'g measured':>14} {'g analysis':>14} {'err g':>9} {'err v':>9} {'err U':>9}"
           f" {'err phi':>9} {'err p':>9} {'history v':>10}")
     for n in range(len(xs) - 1):
@@ -172,6 +177,12 @@ def main():
         worst_history = max(worst_history, eh)
         print(f"{n + 1:4d} {np.linalg.norm(x1[:npc])/v0:10.3e} {g_m.real:+14.10f} {g_a.real:+14.10f} {e['g']:9.2e}"
               f" {e['v']:9.2e} {e['U']:9.2e} {e['phi']:9.2e} {e['p']:9.2e} {eh:10.2e}")
+        last = n + 1
+    ev = np.linalg.eigvals(A)
+    lead = ev[np.argmax(abs(ev))]
+    print(f"dominant eigenvalue {lead.real:+.10f} {lead.imag:+.3e} last amplification {g_m.real:+.10f}")
+    print(f"growth over {last} steps: measured {np.linalg.norm(xs[last][:npc])/v0:.10g}, "
+          f"analysis {np.linalg.norm((np.linalg.matrix_power(A, last) @ xs[0])[:npc])/v0:.10g}")
     print("largest one-step relative differences: " + ", ".join(f"{k} {v:.2e}" for k, v in worst.items())
           + f"; history (A^n x0) v {worst_history:.2e}")
     ok = all(worst[k] <= tol for k in ("g", "v", "phi")) and all(worst[k] <= fluid_tol for k in ("U", "p"))
