@@ -66,6 +66,9 @@ void usage()
 "  --viscous x                   nu Dt/h^2 of the fluid (default 0)\n"
 "  --correctors n                PIMPLE nCorrectors (default 3); --no-predictor\n"
 "  --ddt-coeff x                 ddtCorr coupling coefficient (default 1, the linear limit)\n"
+"Advisor (physical parameters; adviseCoupledCase.py reads them from a case):\n"
+"  --advise --law L --law-coeffs k=v,.. --drag D --drag-coeffs d=..,.. --rho-f --nu-f\n"
+"        --h --fluid-dt --aS [--courant 0.5 --shape --alpha --scheme --mode --forces]\n"
 "Outputs:\n"
 "  --nk 64 | --kh k1,k2          spectral radius vs kh (table of pi/8 multiples, or the given kh)\n"
 "  --csv file                    rho(kh) of every combination\n"
@@ -330,6 +333,7 @@ void runMap(const CoupledOptions& o)
 
 int runCoupled(int argc, char** argv)
 {
+    for (int i = 1; i < argc; ++i) if (std::string(argv[i]) == "--advise") return runAdvisor(argc, argv);
     const CoupledOptions o = parse(argc, argv);
     if (!o.table && !o.limit && o.mapDt.n == 0 && o.symbolKh < 0)
     {

@@ -3,3 +3,5 @@
 #pragma once
 
 int runCoupled(int argc, char** argv);
+// --model coupled --advise: a case's physical parameters (coupledAdvisor.cpp)
+int runAdvisor(int argc, char** argv);
