@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Time-step advice for a coupled mpmFoam case from the coupled spectral
-analysis (docs/stabilityAnalysis.md section 9).
+analysis (docs/stabilityAnalysis.md section 7b).
 
 Reads the case's dictionaries (controlDict deltaT, blockMeshDict h,
 transportProperties, mpmProperties: shape, flipRatio, stressUpdate,

@@ -66,7 +66,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     Info<< "Fluid coupling:" << nl;
     mode_ = readChoice(d, "mode", parseMode, modeName, "oneWay twoWayMomentum twoWay", couplingMode::twoWay);
     // frozen: the scheme before the linearised response, unstable for
-    // lifted beds (docs/stabilityAnalysis.md section 9); an analysis aid
+    // lifted beds (docs/stabilityAnalysis.md section 7b); an analysis aid
     response_ = readChoice(d, "fluidResponse", parseResponse, responseName, "linearised frozen", fluidResponse::linearised);
     forceNames_ = d.get<wordList>("forces");
     // Each force's own keywords are known only once it is selected
