@@ -5,6 +5,8 @@
 // --help and docs/stabilityAnalysis.md.
 #include "stability/fourierSymbol.hpp"
 #include "stability/stabilityLimit.hpp"
+#include "cliLists.hpp"
+#include "coupledAnalysis.hpp"
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -44,6 +46,7 @@ void usage()
     std::cout <<
 "Usage: mpmStabilityAnalysis [options]\n"
 "  --model diffusion|wave        model problem (default diffusion)\n"
+"  --model coupled ...           the coupled MPM-fluid step (see --model coupled --help)\n"
 "  --shape LH,QBS,CBS            shape function(s)\n"
 "  --alpha 0,0.5,1               FLIP fraction(s): 0 PIC, 1 FLIP\n"
 "  --mass lumped,consistent      mass matrix kind(s)\n"
@@ -62,27 +65,9 @@ void usage()
 "  --theta-intervals n           kh samples in [0,pi] for the limit (default 360)\n";
 }
 
-std::vector<std::string> splitList(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ',')) if (!item.empty()) out.push_back(item);
-    return out;
-}
-
-std::vector<Real> realList(const std::string& s)
-{
-    std::vector<Real> out;
-    for (const std::string& x : splitList(s)) out.push_back(std::stod(x));
-    return out;
-}
-
-[[noreturn]] void fail(const std::string& msg)
-{
-    std::cerr << "mpmStabilityAnalysis: " << msg << "\n";
-    std::exit(1);
-}
+using cli::fail;
+using cli::realList;
+using cli::splitList;
 
 Options parse(int argc, char** argv)
 {
@@ -290,6 +275,8 @@ void runSweep(const Options& o, const std::vector<AnalysisSetup>& setups)
 
 int main(int argc, char** argv)
 {
+    for (int i = 1; i + 1 < argc; ++i)
+        if (std::string(argv[i]) == "--model" && std::string(argv[i + 1]) == "coupled") return runCoupled(argc, argv);
     const Options o = parse(argc, argv);
     const std::vector<AnalysisSetup> setups = combinations(o);
     if (o.numbers.empty() && !o.limit && o.sweepPoints <= 0)

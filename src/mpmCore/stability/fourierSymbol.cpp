@@ -1,5 +1,5 @@
 #include "fourierSymbol.hpp"
-#include <Eigen/Dense>
+#include "stepSymbol.hpp"
 #include <cmath>
 #include <limits>
 
@@ -8,11 +8,21 @@ namespace stability {
 
 namespace {
 
-using Mat = Eigen::MatrixXcd;
-using Vec = Eigen::VectorXcd;
-using RowVec = Eigen::RowVectorXcd;
+using namespace detail;
 constexpr Real pi = 3.14159265358979323846;
 const Real nan = std::numeric_limits<Real>::quiet_NaN();
+
+// PIC/FLIP blend of the G2P update, for vo/vn = grid velocity before/after
+// the nodal update (1 x K rows, one column per basis state):
+//   v_p' = alpha (v_p + a (vn - vo)) + (1 - alpha) a vn
+Mat gridToPoints(Real alpha, const Mat& v, const Vec& a, const RowVec& vo, const RowVec& vn)
+{
+    return alpha*v + a*(alpha*(vn - vo) + (1.0 - alpha)*vn);
+}
+
+} // namespace
+
+namespace detail {
 
 Mat toEigen(const ComplexMatrix& m)
 {
@@ -30,15 +40,62 @@ ComplexMatrix fromEigen(const Mat& e)
     return m;
 }
 
-// PIC/FLIP blend of the G2P update, for vo/vn = grid velocity before/after
-// the nodal update (1 x K rows, one column per basis state):
-//   v_p' = alpha (v_p + a (vn - vo)) + (1 - alpha) a vn
-Mat gridToPoints(Real alpha, const Mat& v, const Vec& a, const RowVec& vo, const RowVec& vn)
+RowVec gridVelocity(const AnalysisSetup& s, const TransferSymbols& t, const Mat& v)
 {
-    return alpha*v + a*(alpha*(vn - vo) + (1.0 - alpha)*vn);
+    const int n = s.pointsPerCell();
+    const Vec a = Eigen::Map<const Vec>(t.a.data(), n);
+    return (t.mu/n)*a.adjoint()*v;
 }
 
-} // namespace
+StepResult mpmStep(const AnalysisSetup& s, const TransferSymbols& t, Real number,
+                   const Mat& v, const Mat& sig, const NodalUpdate& nodal)
+{
+    const int n = s.pointsPerCell();
+    const Vec a = Eigen::Map<const Vec>(t.a.data(), n);
+    const Vec beta = Eigen::Map<const Vec>(t.beta.data(), n);
+    // P2G velocity: v_I = M^-1 sum_p m N_I v_p          -> vI = P v
+    // grid force:   dt M^-1 f_I = -dt M^-1 sum_p V G_I sigma_p -> number * Q s
+    // point gradient * dt (stress increment / rho c):   -> number * B vI
+    const RowVec Q = -(t.mu/n)*beta.adjoint();
+    const Vec& B = beta;
+    const RowVec vo = gridVelocity(s, t, v);
+    StepResult r;
+    if (s.model == Model::diffusion)
+    {
+        const Complex gridDiffusion = number*(Q*B)(0, 0);   // Theta = -Fo mu |beta|^2 / npc
+        r.vGrid = nodal(vo, (1.0 + gridDiffusion)*vo);
+        r.v = gridToPoints(s.alpha, v, a, vo, r.vGrid);
+        return r;
+    }
+    const Real lam = number;
+    switch (s.scheme)
+    {
+        case StressUpdate::USF:
+        {
+            r.sigma = sig + lam*B*vo;                  // stress first, from P2G velocity
+            r.vGrid = nodal(vo, vo + lam*Q*r.sigma);
+            r.v = gridToPoints(s.alpha, v, a, vo, r.vGrid);
+            break;
+        }
+        case StressUpdate::USL:
+        {
+            r.vGrid = nodal(vo, vo + lam*Q*sig);
+            r.v = gridToPoints(s.alpha, v, a, vo, r.vGrid);
+            r.sigma = sig + lam*B*r.vGrid;             // stress last, from updated grid velocity
+            break;
+        }
+        case StressUpdate::MUSL:
+        {
+            r.vGrid = nodal(vo, vo + lam*Q*sig);
+            r.v = gridToPoints(s.alpha, v, a, vo, r.vGrid);
+            r.sigma = sig + lam*B*gridVelocity(s, t, r.v);   // re-map updated point momentum
+            break;
+        }
+    }
+    return r;
+}
+
+} // namespace detail
 
 TransferSymbols transferSymbols(const AnalysisSetup& s, Real theta)
 {
@@ -84,59 +141,16 @@ ComplexMatrix amplificationSymbol(const AnalysisSetup& s, Real theta, Real numbe
         return m;
     }
 
-    const Vec a = Eigen::Map<const Vec>(t.a.data(), n);
-    const Vec beta = Eigen::Map<const Vec>(t.beta.data(), n);
-    // P2G velocity: v_I = M^-1 sum_p m N_I v_p          -> vI = P v
-    // grid force:   dt M^-1 f_I = -dt M^-1 sum_p V G_I sigma_p -> number * Q s
-    // point gradient * dt (stress increment / rho c):   -> number * B vI
-    const RowVec P = (t.mu/n)*a.adjoint();
-    const RowVec Q = -(t.mu/n)*beta.adjoint();
-    const Vec& B = beta;
-
     // Apply the algorithm, step by step, to every basis state at once
     // (columns), so the matrix is read off the code rather than re-derived.
     const Mat I = Mat::Identity(K, K);
-    const Mat v = I.topRows(n);
-    if (s.model == Model::diffusion)
-    {
-        const RowVec vo = P*v;
-        const Complex gridDiffusion = number*(Q*B)(0, 0);   // Theta = -Fo mu |beta|^2 / npc
-        const RowVec vn = (1.0 + gridDiffusion)*vo;
-        return fromEigen(gridToPoints(s.alpha, v, a, vo, vn));
-    }
-
-    const Mat sig = I.bottomRows(n);
-    const Real lam = number;
-    Mat vNew, sNew;
-    const RowVec vo = P*v;
-    switch (s.scheme)
-    {
-        case StressUpdate::USF:
-        {
-            sNew = sig + lam*B*vo;                  // stress first, from P2G velocity
-            const RowVec vn = vo + lam*Q*sNew;
-            vNew = gridToPoints(s.alpha, v, a, vo, vn);
-            break;
-        }
-        case StressUpdate::USL:
-        {
-            const RowVec vn = vo + lam*Q*sig;
-            vNew = gridToPoints(s.alpha, v, a, vo, vn);
-            sNew = sig + lam*B*vn;                  // stress last, from updated grid velocity
-            break;
-        }
-        case StressUpdate::MUSL:
-        {
-            const RowVec vn = vo + lam*Q*sig;
-            vNew = gridToPoints(s.alpha, v, a, vo, vn);
-            const RowVec vg = P*vNew;               // re-map updated point momentum
-            sNew = sig + lam*B*vg;
-            break;
-        }
-    }
+    const Mat sig = s.model == Model::wave ? Mat(I.bottomRows(n)) : Mat();
+    const StepResult r = mpmStep(s, t, number, I.topRows(n), sig,
+                                 [](const RowVec&, const RowVec& vn) { return vn; });
+    if (s.model == Model::diffusion) return fromEigen(r.v);
     Mat A(K, K);
-    A.topRows(n) = vNew;
-    A.bottomRows(n) = sNew;
+    A.topRows(n) = r.v;
+    A.bottomRows(n) = r.sigma;
     return fromEigen(A);
 }
 

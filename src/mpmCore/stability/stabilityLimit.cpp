@@ -20,12 +20,17 @@ bool isStable(const AnalysisSetup& s, Real number, const LimitOptions& o)
 
 StabilityLimit stabilityLimit(const AnalysisSetup& s, const LimitOptions& o)
 {
+    return stabilityLimit([&](Real p) { return isStable(s, p, o); }, o);
+}
+
+StabilityLimit stabilityLimit(const std::function<bool(Real)>& stable, const LimitOptions& o)
+{
     StabilityLimit result;
     Real lo = 0, hi = -1;
     for (int i = 1; i <= o.scanPoints; ++i)
     {
         const Real p = o.maxNumber*i/o.scanPoints;
-        if (!isStable(s, p, o)) { hi = p; break; }
+        if (!stable(p)) { hi = p; break; }
         lo = p;
     }
     if (hi < 0) { result.limit = o.maxNumber; result.reachedMax = true; return result; }
@@ -33,7 +38,7 @@ StabilityLimit stabilityLimit(const AnalysisSetup& s, const LimitOptions& o)
     while (hi - lo > o.relTolerance*hi && hi > 1e-14*o.maxNumber)
     {
         const Real mid = 0.5*(lo + hi);
-        (isStable(s, mid, o) ? lo : hi) = mid;
+        (stable(mid) ? lo : hi) = mid;
     }
     result.limit = lo;
     return result;

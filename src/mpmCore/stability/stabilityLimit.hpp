@@ -10,6 +10,7 @@
 // ignored by design (it is not usable as a time-step rule anyway).
 #pragma once
 #include "stabilitySetup.hpp"
+#include <functional>
 #include <utility>
 
 namespace mpm {
@@ -33,6 +34,9 @@ struct StabilityLimit
 };
 
 bool isStable(const AnalysisSetup&, Real number, const LimitOptions&);
+// The scan-and-bisect search above for any predicate stable(p) on
+// (0, o.maxNumber] (o.thetaIntervals and o.slack are the predicate's business).
+StabilityLimit stabilityLimit(const std::function<bool(Real)>& stable, const LimitOptions&);
 StabilityLimit stabilityLimit(const AnalysisSetup&, const LimitOptions&);
 
 // Limit versus position: the setup's offset pattern shifted by each `shift`

@@ -28,6 +28,21 @@ bool parseMode(const std::string& s, Foam::fluidCoupling::couplingMode& m)
     return false;
 }
 
+const char* responseName(Foam::fluidCoupling::fluidResponse r)
+{
+    return r == Foam::fluidCoupling::fluidResponse::frozen ? "frozen" : "linearised";
+}
+
+bool parseResponse(const std::string& s, Foam::fluidCoupling::fluidResponse& r)
+{
+    using R = Foam::fluidCoupling::fluidResponse;
+    for (auto c : {R::linearised, R::frozen})
+    {
+        if (s == responseName(c)) { r = c; return true; }
+    }
+    return false;
+}
+
 } // namespace
 
 Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase& fluid)
@@ -50,9 +65,12 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     const dictionary& d = mpmDict.subDict("coupling");
     Info<< "Fluid coupling:" << nl;
     mode_ = readChoice(d, "mode", parseMode, modeName, "oneWay twoWayMomentum twoWay", couplingMode::twoWay);
+    // frozen: the scheme before the linearised response, unstable for
+    // lifted beds (docs/stabilityAnalysis.md section 7b); an analysis aid
+    response_ = readChoice(d, "fluidResponse", parseResponse, responseName, "linearised frozen", fluidResponse::linearised);
     forceNames_ = d.get<wordList>("forces");
     // Each force's own keywords are known only once it is selected
-    wordList known({"mode", "forces", "alphaMax", "subCycles"});
+    wordList known({"mode", "forces", "alphaMax", "subCycles", "fluidResponse"});
     forAll(forceNames_, i)
     {
         solidForce::checkName(forceNames_[i], d);

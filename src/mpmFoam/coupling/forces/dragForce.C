@@ -173,6 +173,12 @@ void Foam::dragForce::addTo(solidForceTerms& t) const
     {
         const scalar KDrag = beta[celli]*V[celli];
         if (KDrag <= 0) continue;
+        if (coupling_.frozenFluid())
+        {
+            t.K[celli] += KDrag;
+            t.KU[celli] += KDrag*U[celli];
+            continue;
+        }
         const scalar aF = coupling_.volumeCoupled() ? 1 - coupling_.cappedAlphaSolid(celli) : 1;
         const scalar K = KDrag/aF;      // d(force)/dv with the slip's response
         t.K[celli] += K;

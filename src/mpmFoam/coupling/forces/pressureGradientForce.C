@@ -26,7 +26,7 @@ void Foam::pressureGradientForce::addTo(solidForceTerms& t) const
 {
     const scalar rhoF = coupling_.fluid().rho().value();
     forAll(gradp_, celli) t.F[celli] -= rhoF*gradp_[celli];
-    if (coupling_.mode() == fluidCoupling::couplingMode::oneWay) return;
+    if (coupling_.mode() == fluidCoupling::couplingMode::oneWay || coupling_.frozenFluid()) return;
 
     const volScalarField& beta = coupling_.fluid().beta();
     const scalarField& V = coupling_.mesh().V();

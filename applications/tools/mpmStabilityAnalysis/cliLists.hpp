@@ -1,0 +1,43 @@
+// Command-line helpers shared by the pure-MPM and the coupled analyses.
+#pragma once
+#include "types.hpp"
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace mpm {
+namespace cli {
+
+[[noreturn]] inline void fail(const std::string& msg)
+{
+    std::cerr << "mpmStabilityAnalysis: " << msg << "\n";
+    std::exit(1);
+}
+
+inline std::vector<std::string> splitList(const std::string& s, char sep = ',')
+{
+    std::vector<std::string> out;
+    std::stringstream ss(s);
+    std::string item;
+    while (std::getline(ss, item, sep)) if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+inline Real toReal(const std::string& s)
+{
+    try { std::size_t n = 0; const Real x = std::stod(s, &n); if (n == s.size()) return x; }
+    catch (const std::exception&) {}
+    fail("not a number: '" + s + "'");
+}
+
+inline std::vector<Real> realList(const std::string& s)
+{
+    std::vector<Real> out;
+    for (const std::string& x : splitList(s)) out.push_back(toReal(x));
+    return out;
+}
+
+} // namespace cli
+} // namespace mpm
