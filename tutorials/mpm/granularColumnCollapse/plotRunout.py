@@ -23,19 +23,24 @@ import mpmPost
 from plotProfile import measure
 
 
+# The materials of constant/mpmProperties, by law
+LABELS = {"sand": "Drucker-Prager (sand)", "glassBeads": "mu(I) (glassBeads)"}
+
+
 def lube(a):
     return 1.2*a if a < 2.3 else 1.9*a**(2.0/3.0)
 
 
 def run_parameters(run):
-    m = re.search(r"(\w+)_a([0-9.]+)_h([0-9.]+)$", os.path.basename(run.rstrip("/")))
-    return m.group(1), float(m.group(2)), float(m.group(3))
+    """(material [with '_E<E>' when the sweep set E], a, h) from the run's name."""
+    m = re.search(r"([A-Za-z0-9]+)_a([0-9.]+)_h([0-9.]+)(_E[-+0-9.e]+)?$", os.path.basename(run.rstrip("/")))
+    return m.group(1) + (m.group(4) or ""), float(m.group(2)), float(m.group(3))
 
 
 def main():
     runs = [r for r in sys.argv[1:] if not r.startswith("--")]
     rows = []
-    print("%-12s %5s %7s %6s %8s %8s %7s %10s %8s" % ("material", "a", "h [m]", "points", "runout",
+    print("%-16s %5s %7s %6s %8s %8s %7s %10s %8s" % ("material", "a", "h [m]", "points", "runout",
           "Lube", "ratio", "maxU end", "t end"))
     for run in runs:
         law, a, h = run_parameters(run)
@@ -43,7 +48,7 @@ def main():
         runout = (m["Lf"] - m["a0"])/m["a0"]
         s = mpmPost.read_summary(run)
         rows.append((law, a, h, runout))
-        print("%-12s %5g %7g %6d %8.3f %8.3f %7.3f %10.3g %8s" % (law, m["h0"]/m["a0"], h, len(m["x1"]),
+        print("%-16s %5g %7g %6d %8.3f %8.3f %7.3f %10.3g %8s" % (law, m["h0"]/m["a0"], h, len(m["x1"]),
               runout, lube(a), runout/lube(a), s["maxU"][-1], m["times"][-1]))
 
     print("Change of the runout when the cell size halves:")
@@ -52,7 +57,7 @@ def main():
             by_h = sorted((h, ro) for l, aa, h, ro in rows if l == law and aa == a)
             for (h2, r2), (h1, r1) in zip(by_h, by_h[1:]):
                 if abs(h1/h2 - 2) < 1e-6:
-                    print("  %-12s a = %-4g h %g -> %g: %.3f -> %.3f (%+.1f %%)"
+                    print("  %-16s a = %-4g h %g -> %g: %.3f -> %.3f (%+.1f %%)"
                           % (law, a, h1, h2, r1, r2, 100*(r2 - r1)/r1))
 
     if "--no-plot" in sys.argv:
@@ -74,7 +79,7 @@ def main():
             pts = sorted((a, ro) for l, a, hh, ro in rows if l == law and hh == h)
             if pts:
                 ax.plot(*zip(*pts), mk, color=colour, mfc="none" if h != sizes[-1] else colour,
-                        ms=6, label="%s, h = %g m" % (law, h))
+                        ms=6, label="%s, h = %g m" % (LABELS.get(law, law), h))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("aspect ratio a = h$_0$/a$_0$")
