@@ -38,14 +38,6 @@ DEOF
     else
         checkRun "$c" --energy-growth 5e-2
     fi
-    read -r nT minJ minV <<< "$("$PY" - "$c" <<'PYEOF'
-import sys, mpmPost
-c = sys.argv[1]
-ts = mpmPost.times(c)
-print(len(ts), min(mpmPost.read_cloud_field(c, t, "J").min() for t in ts),
-      min(mpmPost.read_cloud_field(c, t, "volume").min() for t in ts))
-PYEOF
-)"
-    check "$mode: no J <= 0 or volume <= 0 written ($nT times; min J $minJ)" "J > 0 and V > 0" J="${minJ:-0}" V="${minV:-0}"
+    checkNothingInverted "$c" "$mode"
 done
 finish
