@@ -1,4 +1,5 @@
 #include "choice.H"
+#include <cctype>
 #include <cmath>
 
 bool Foam::numberRange::contains(scalar v) const
@@ -65,4 +66,40 @@ Foam::scalar Foam::readBounded
 )
 {
     return readBounded(dict, keyword, deflt, numberRange{minValue, maxValue}, echo);
+}
+
+std::string Foam::spaceSeparated(const wordList& words)
+{
+    std::string s;
+    for (const word& w : words) s += (s.empty() ? "" : " ") + w;
+    return s;
+}
+
+void Foam::checkSelection
+(
+    const wordList& selected,
+    const wordList& valid,
+    const dictionary& dict,
+    const word& what,
+    const word& keyword
+)
+{
+    forAll(selected, i)
+    {
+        if (!valid.found(selected[i]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown " << what << " '" << selected[i] << "' in "
+                << keyword << nl << "Valid " << what << "s: "
+                << spaceSeparated(valid).c_str() << exit(FatalIOError);
+        }
+        if (selected.find(selected[i]) != i)
+        {
+            std::string What(what);
+            What[0] = std::toupper(What[0]);
+            FatalIOErrorInFunction(dict)
+                << What.c_str() << " '" << selected[i] << "' listed twice in "
+                << keyword << " " << selected << exit(FatalIOError);
+        }
+    }
 }

@@ -60,7 +60,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
             << "The case has a fluid (constant/transportProperties, 0/U) but "
             << "mpmProperties has no coupling { mode ...; forces (...); }" << nl
             << "Valid modes: oneWay twoWayMomentum twoWay; valid forces: "
-            << solidForce::namesString().c_str() << exit(FatalIOError);
+            << spaceSeparated(solidForce::names()).c_str() << exit(FatalIOError);
     }
     const dictionary& d = mpmDict.subDict("coupling");
     Info<< "Fluid coupling:" << nl;
@@ -71,16 +71,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     forceNames_ = d.get<wordList>("forces");
     // Each force's own keywords are known only once it is selected
     wordList known({"mode", "forces", "alphaMax", "subCycles", "fluidResponse"});
-    forAll(forceNames_, i)
-    {
-        solidForce::checkName(forceNames_[i], d);
-        if (forceNames_.find(forceNames_[i]) != i)
-        {
-            FatalIOErrorInFunction(d)
-                << "Force '" << forceNames_[i] << "' listed twice in forces "
-                << forceNames_ << exit(FatalIOError);
-        }
-    }
+    checkSelection(forceNames_, solidForce::names(), d, "force", "forces");
     Info<< "    forces " << forceNames_ << " (others are not computed)" << nl;
     // Below 1: the fluid keeps a share of every cell (alpha.fluid >= 1 -
     // alphaMax divides the pressure equation and the drag)

@@ -1,11 +1,17 @@
 #include "mpmDiagnostic.H"
 #include "mpmModel.H"
 #include "Time.H"
+#include "choice.H"
 
 namespace Foam
 {
     defineTypeNameAndDebug(mpmDiagnostic, 0);
     defineRunTimeSelectionTable(mpmDiagnostic, dictionary);
+}
+
+Foam::wordList Foam::mpmDiagnostic::names()
+{
+    return dictionaryConstructorTablePtr_->sortedToc();
 }
 
 Foam::autoPtr<Foam::mpmDiagnostic> Foam::mpmDiagnostic::New
@@ -15,20 +21,8 @@ Foam::autoPtr<Foam::mpmDiagnostic> Foam::mpmDiagnostic::New
     const dictionary& mpmDict
 )
 {
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
-    if (!cstrIter.found())
-    {
-        std::string valid;
-        for (const word& n : dictionaryConstructorTablePtr_->sortedToc())
-        {
-            valid += (valid.empty() ? "" : " ") + n;
-        }
-        FatalIOErrorInFunction(mpmDict)
-            << "Unknown diagnostic '" << name << "' in diagnostics" << nl
-            << "Valid diagnostics: " << valid.c_str()
-            << exit(FatalIOError);
-    }
-    return cstrIter()(mpm, mpmDict);
+    checkSelection(wordList({name}), names(), mpmDict, "diagnostic", "diagnostics");
+    return dictionaryConstructorTablePtr_->cfind(name)()(mpm, mpmDict);
 }
 
 Foam::OFstream& Foam::mpmDiagnostic::file

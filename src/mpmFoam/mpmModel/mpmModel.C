@@ -1,4 +1,5 @@
 #include "mpmModel.H"
+#include "choice.H"
 #include "wallConditions.H"
 #include "Time.H"
 #include "clockTime.H"
@@ -106,14 +107,9 @@ void Foam::mpmModel::readDiagnostics()
         << (dict_.found("diagnostics") ? "" : " (default)") << nl << endl;
     diagnostics_.setSize(diagnosticNames_.size());
     diagnosticTime_.setSize(diagnosticNames_.size(), Zero);
+    checkSelection(diagnosticNames_, mpmDiagnostic::names(), dict_, "diagnostic", "diagnostics");
     forAll(diagnosticNames_, i)
     {
-        if (diagnosticNames_.find(diagnosticNames_[i]) != i)
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Diagnostic '" << diagnosticNames_[i] << "' listed twice in "
-                << "diagnostics " << diagnosticNames_ << exit(FatalIOError);
-        }
         diagnostics_.set(i, mpmDiagnostic::New(diagnosticNames_[i], *this, dict_));
     }
 }

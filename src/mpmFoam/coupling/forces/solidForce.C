@@ -1,4 +1,5 @@
 #include "solidForce.H"
+#include "choice.H"
 
 namespace Foam
 {
@@ -11,24 +12,6 @@ Foam::wordList Foam::solidForce::names()
     return dictionaryConstructorTablePtr_->sortedToc();
 }
 
-std::string Foam::solidForce::namesString()
-{
-    std::string s;
-    for (const word& n : names()) s += (s.empty() ? "" : " ") + n;
-    return s;
-}
-
-void Foam::solidForce::checkName(const word& name, const dictionary& dict)
-{
-    if (!dictionaryConstructorTablePtr_->found(name))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown force '" << name << "' in forces" << nl
-            << "Valid forces: " << namesString().c_str()
-            << exit(FatalIOError);
-    }
-}
-
 Foam::autoPtr<Foam::solidForce> Foam::solidForce::New
 (
     const word& name,
@@ -36,6 +19,6 @@ Foam::autoPtr<Foam::solidForce> Foam::solidForce::New
     const dictionary& couplingDict
 )
 {
-    checkName(name, couplingDict);
+    checkSelection(wordList({name}), names(), couplingDict, "force", "forces");
     return dictionaryConstructorTablePtr_->cfind(name)()(coupling, couplingDict);
 }
