@@ -162,7 +162,7 @@ void Foam::fluidCoupling::updateFluidFraction()
         const scalar alphaS = alphaSolid(celli);
         if (alphaS > maxAlphaS) { maxAlphaS = alphaS; maxCell = celli; }
         if (alphaS > alphaMax_) { ++capped; capped_[celli] = true; }
-        aF[celli] = mode_ == couplingMode::twoWay ? 1 - min(alphaS, alphaMax_) : 1.0;
+        aF[celli] = fluidFraction(celli);
     }
     alphaF.correctBoundaryConditions();
     // Over all processors: the count, the largest alpha.solid and where,

@@ -179,8 +179,8 @@ void Foam::dragForce::addTo(solidForceTerms& t) const
             t.KU[celli] += KDrag*U[celli];
             continue;
         }
-        const scalar aF = coupling_.volumeCoupled() ? 1 - coupling_.cappedAlphaSolid(celli) : 1;
-        const scalar K = KDrag/aF;      // d(force)/dv with the slip's response
+        // d(force)/dv with the slip's response
+        const scalar K = KDrag/coupling_.fluidFraction(celli);
         t.K[celli] += K;
         t.KU[celli] += KDrag*U[celli] + (K - KDrag)*coupling_.solidVelocity(celli);
     }

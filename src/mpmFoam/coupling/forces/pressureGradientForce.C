@@ -30,15 +30,13 @@ void Foam::pressureGradientForce::addTo(solidForceTerms& t) const
 
     const volScalarField& beta = coupling_.fluid().beta();
     const scalarField& V = coupling_.mesh().V();
-    const bool volumeCoupled = coupling_.volumeCoupled();
     forAll(beta, celli)
     {
         const scalar KDrag = beta[celli]*V[celli];
         if (KDrag <= 0) continue;
-        const scalar aS = coupling_.cappedAlphaSolid(celli);
-        const scalar aF = volumeCoupled ? 1 - aS : 1;
-        const scalar slipPerDv = volumeCoupled ? 1/aF : 1;
-        const scalar Kp = KDrag*slipPerDv*aS/aF;
+        // (aS/aF) beta V times d(slip)/dv = 1/aF
+        const scalar aF = coupling_.fluidFraction(celli);
+        const scalar Kp = KDrag*coupling_.cappedAlphaSolid(celli)/(aF*aF);
         t.K[celli] += Kp;
         t.KU[celli] += Kp*coupling_.solidVelocity(celli);
     }
