@@ -7,8 +7,8 @@
 #include "constitutive/constitutiveLaw.hpp"
 #include "step/mpmSystem.hpp"
 #include "machine.hpp"
+#include "timedSteps.hpp"
 #include <algorithm>
-#include <chrono>
 #include <random>
 #include <cstdio>
 #include <cstdlib>
@@ -85,18 +85,14 @@ int main(int argc, char** argv)
     {
         omp_set_num_threads(threads);
         MpmSystem s = makeBlock(shape, n, reorder, shuffle);
-        const Real dt = s.stableDeltaT(0.5);
-        s.step(dt);   // warm-up: first-touch allocation
-        const StepTimers t0 = s.timers();
-        const auto start = std::chrono::steady_clock::now();
-        for (int i = 0; i < steps; ++i) s.step(dt);
-        const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const StepTimers& t = s.timers();
-        const double tot = t.total() - t0.total();
+        // one warm-up step: first-touch allocation
+        const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), 1, steps);
+        const double sec = r.seconds;
+        const StepTimers& t = r.phases;
+        const double tot = t.total();
         std::printf("%-18s %8d %10lld %12.2f %14.3f %10.1f %10.1f %10.1f %10.1f\n", shapeName(shape), threads,
                     (long long)s.particles().size(), 1e3*sec/steps, s.particles().size()*double(steps)/sec/1e6,
-                    100*(t.p2g - t0.p2g)/tot, 100*(t.nodal - t0.nodal)/tot, 100*(t.g2p - t0.g2p)/tot,
-                    100*(t.constitutive - t0.constitutive)/tot);
+                    100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot);
     }
     return 0;
 }

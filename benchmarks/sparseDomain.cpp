@@ -10,7 +10,7 @@
 #include "constitutive/constitutiveLaw.hpp"
 #include "step/mpmSystem.hpp"
 #include "machine.hpp"
-#include <chrono>
+#include "timedSteps.hpp"
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -67,21 +67,15 @@ int main(int argc, char** argv)
         for (const auto& bx : boxes)
         {
             MpmSystem s = makeBall(bx[0], bx[1], bx[2], sparse);
-            const Real dt = s.stableDeltaT(0.5);
-            for (int i = 0; i < 5; ++i) s.step(dt);   // warm-up
-            const StepTimers t0 = s.timers();
-            const auto start = std::chrono::steady_clock::now();
-            for (int i = 0; i < steps; ++i) s.step(dt);
-            const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const StepTimers& t = s.timers();
-            const double tot = t.total() - t0.total();
+            const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), 5, steps);
+            const double sec = r.seconds;
             const double ms = 1e3*sec/steps;
             if (base == 0) base = ms;
             char name[32];
             std::snprintf(name, sizeof name, "%dx%dx%d", bx[0], bx[1], bx[2]);
             std::printf("%-6s %-12s %7dx %8lld %12.3f %10.2f %12lld %10.1f %10.2f\n", sparse ? "sparse" : "dense", name,
                         bx[0]*bx[1]*bx[2]/8000, (long long)s.particles().size(), ms, ms/base,
-                        (long long)s.activeNodeCount(), 100*(t.nodal - t0.nodal)/tot,
+                        (long long)s.activeNodeCount(), 100*r.phases.nodal/r.phases.total(),
                         s.particles().size()*double(steps)/sec/1e6);
         }
     }

@@ -1,0 +1,33 @@
+// The timed loop every step benchmark runs: warm-up steps, then `steps`
+// steps of dt timed by the wall clock and by the step's own phase timers.
+#pragma once
+#include "step/mpmSystem.hpp"
+#include <chrono>
+
+namespace mpm::bench {
+
+struct TimedSteps
+{
+    double seconds = 0;       // wall time of the timed steps
+    StepTimers phases;        // the phase timers over the timed steps only
+};
+
+inline TimedSteps timeSteps(MpmSystem& s, Real dt, int warmup, int steps)
+{
+    for (int i = 0; i < warmup; ++i) s.step(dt);
+    const StepTimers t0 = s.timers();
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < steps; ++i) s.step(dt);
+    TimedSteps r;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const StepTimers& t = s.timers();
+    r.phases.p2g = t.p2g - t0.p2g;
+    r.phases.nodal = t.nodal - t0.nodal;
+    r.phases.g2p = t.g2p - t0.g2p;
+    r.phases.constitutive = t.constitutive - t0.constitutive;
+    r.phases.migration = t.migration - t0.migration;
+    r.phases.halo = t.halo - t0.halo;
+    return r;
+}
+
+} // namespace mpm::bench
