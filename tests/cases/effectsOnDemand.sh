@@ -11,6 +11,7 @@
 #  - the same with forces (drag) and diagnostics (): no pressure-gradient
 #    cost, no energy line, no postProcessing/mpmSummary, and a different
 #    solution (the pressure gradient did act before);
+#  - decomposed on 3 ranks, the materialTotals table equals serial;
 #  - an unknown or repeated diagnostic is an error listing the valid ones.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
@@ -20,6 +21,10 @@ c=$(copyTutorial multiphase/packedBed packedBed)
 sed -i 's/^endTime .*/endTime 0.2;/; s/^writeInterval .*/writeInterval 0.2;/' "$c/system/controlDict"
 d=$(cp -r "$c" "$SCRATCH/fewer" && echo "$SCRATCH/fewer")
 sed -i 's/^logInterval .*/logInterval 1;\ndiagnostics (summary materialTotals);/' "$(props "$c")"
+# The same case decomposed on 3 ranks along the column: the bed (the lower
+# half) spans ranks 0 and 1, so a total the master alone made would differ
+p=$(cp -r "$c" "$SCRATCH/parallel" && echo "$SCRATCH/parallel")
+decomposeCase "$p" 3 simple "n (1 3 1);"
 sed -i 's/^logInterval .*/logInterval 1;\ndiagnostics ();/; s/^\( *forces *\).*/\1(drag);/' "$(props "$d")"
 
 runIn "$c" mpmFoam > "$c/log.mpmFoam" 2>&1 || { echo "FAIL: run with every force and diagnostic"; tail -20 "$c/log.mpmFoam"; exit 1; }
@@ -54,6 +59,17 @@ rows=$(grep -vc "^#" "$table")
 bad=$(awk -v n="$nSeed" -v m="$mSeed" '!/^#/ && ($2 != n || ($3 - m)^2 > (1e-12*m)^2) {b++} END {print b+0}' "$table")
 check "materialTotals: a row at the start and per fluid step (10), each with the seeded $nSeed points and mass $mSeed" \
     "r == 11 and b == 0" r="$rows" b="$bad"
+
+# Decomposed: the diagnostic sums over the processors (the master writes)
+(cd "$p" && mpirun -np 3 mpmFoam -parallel > log.mpmFoam 2>&1) || { echo "FAIL: 3-rank run"; tail -20 "$p/log.mpmFoam"; failures=$((failures + 1)); }
+"$PY" - "$table" "$p/postProcessing/materialTotals/0/materialTotals.dat" <<'PYEOF' && echo "PASS: materialTotals on 3 ranks equals serial (times, points exact; mass to 1e-12)" || { echo "FAIL: materialTotals on 3 ranks differs from serial"; failures=$((failures + 1)); }
+import sys, numpy as np
+a = np.loadtxt(sys.argv[1]); b = np.loadtxt(sys.argv[2])
+ok = a.shape == b.shape and np.array_equal(a[:, [0, 1, 3]], b[:, [0, 1, 3]]) \
+    and np.allclose(a[:, [2, 4]], b[:, [2, 4]], rtol=1e-12, atol=0)
+print("serial rows", a.shape, "parallel rows", b.shape)
+sys.exit(0 if ok else 1)
+PYEOF
 
 # The pressure gradient acted: the two runs differ
 "$PY" - "$c" "$d" <<'PYEOF' && echo "PASS: dropping the pressure gradient changes the solution" || { echo "FAIL: the pressure gradient had no effect"; failures=$((failures + 1)); }
