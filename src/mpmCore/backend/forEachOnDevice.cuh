@@ -1,0 +1,34 @@
+// The CUDA launcher of the kernel bodies (CUDA translation units only).
+//
+// forEachOnDevice(n, body, "name") runs body(i) for i in [0, n), one thread
+// per item: the bodies of kernels/*.hpp are MPM_HOST_DEVICE functions of one
+// point or one node, and the CPU back-ends run the same bodies in a loop
+// (backend/backend.hpp). body is a device lambda (nvcc --extended-lambda)
+// capturing views and lattices by value: they hold raw device pointers.
+#pragma once
+#include "cudaCheck.cuh"
+#include "../types.hpp"
+
+namespace mpm::cuda {
+
+// 256 threads: a multiple of the warp, enough resident blocks per SM for the
+// register-heavy stencil bodies (CBS: 64 nodes) to hide memory latency.
+constexpr int threadsPerBlock = 256;
+
+template<class Body>
+__global__ void forEachKernel(Index n, Body body)
+{
+    const Index i = Index(blockIdx.x)*blockDim.x + threadIdx.x;
+    if (i < n) body(i);
+}
+
+template<class Body>
+void forEachOnDevice(Index n, Body body, const char* name)
+{
+    if (n <= 0) return;
+    const Index blocks = (n + threadsPerBlock - 1)/threadsPerBlock;
+    forEachKernel<<<unsigned(blocks), threadsPerBlock>>>(n, body);
+    cudaCheckLaunch(name);
+}
+
+} // namespace mpm::cuda
