@@ -1,9 +1,10 @@
 // The CUDA back-end of the MPM step, behind a plain C++ interface: no CUDA
-// type appears here, so the core (MpmSystem), the tests and the OpenFOAM
-// layer include it whether or not the build found nvcc. The implementation
-// is backend/deviceStep.cu (libmpmCoreCuda); a build without CUDA defines
-// only cudaUnavailableReason() (backend/deviceQueryNoCuda.cpp), and the
-// core then never constructs a DeviceStep (MPM_HAVE_CUDA undefined).
+// type appears here, so the core (MpmSystem) and the tests include it
+// whether or not the build found nvcc. The implementation is
+// backend/deviceStep.cu and deviceQuery.cu (libmpmCoreCuda); only a build
+// with MPM_HAVE_CUDA defines it and constructs a DeviceStep. Everyone else
+// asks backendUnavailableReason(Backend::cuda) (backend/backend.hpp),
+// which is cudaUnavailableReason() in a CUDA build.
 //
 // What runs where, per step (docs/gpu.md):
 //
@@ -46,10 +47,8 @@ namespace mpm {
 
 struct LawParams;
 
-// "" when this build has the CUDA back-end and a usable GPU is present,
-// otherwise why not (no CUDA in this build; no device; driver missing or
-// too old): the text of every "cuda back-end unavailable" error, in the
-// core and in the OpenFOAM layer.
+// CUDA builds: "" when a usable GPU is present, otherwise why not (no
+// device; driver missing or too old; an architecture the build lacks).
 std::string cudaUnavailableReason();
 
 class DeviceStep
