@@ -31,6 +31,18 @@ sed -i 's/^shapeFunction .*/shapeFunction   cubic;/' "$(props "$c")"
 expectFailure "unknown shape function" "Unknown shapeFunction 'cubic'" runIn "$c" mpmFoam
 expectFailure "shape function choices" "Valid shapeFunction choices: linearHat quadraticBSpline cubicBSpline" runIn "$c" mpmFoam
 
+c=$(freshCopy unknownBackend)
+echo "backend gpu;" >> "$(props "$c")"
+expectFailure "unknown backend" "Unknown backend 'gpu'" runIn "$c" mpmFoam
+expectFailure "backend choices" "Valid backend choices: serial openmp cuda" runIn "$c" mpmFoam
+
+# cuda from a build without CUDA, or on a machine without a GPU: the reason,
+# before anything is seeded or written
+c=$(freshCopy cudaUnavailable)
+echo "backend cuda;" >> "$(props "$c")"
+expectFailure "cuda unavailable: the reason" "backend cuda cannot run: (this build has no CUDA back-end|.*GPU)" runIn "$c" mpmFoam
+expectFailure "cuda unavailable: the usable back-ends" "Valid backends here: serial openmp" runIn "$c" mpmFoam
+
 c=$(freshCopy unknownWall)
 sed -i 's/fixedEnd { type noSlip; }/fixedEnd { type sticky; }/' "$(props "$c")"
 expectFailure "unknown wall type" "Valid type choices: noSlip slip friction periodic" runIn "$c" mpmFoam

@@ -1,5 +1,9 @@
 #include "mpmSystem.hpp"
 #include "../constitutive/tensorOps.hpp"
+#include "../kernels/g2p.hpp"
+#include "../kernels/movePoint.hpp"
+#include "../kernels/nodal.hpp"
+#include "../kernels/p2g.hpp"
 #include "../transfer/stencil.hpp"
 #include <algorithm>
 #include <cmath>
@@ -15,6 +19,14 @@ void MpmSystem::setup
     std::shared_ptr<const Subdomain> subdomain
 )
 {
+    const std::string unavailable = backendUnavailableReason(options.backend);
+    if (!unavailable.empty())
+    {
+        throw std::invalid_argument
+        (
+            std::string("backend ") + backendName(options.backend) + ": " + unavailable
+        );
+    }
     domain_ = lattice;
     domain_.finalise();
     subdomain_ = std::move(subdomain);
@@ -65,7 +77,11 @@ Index MpmSystem::parallelThreshold = 50000;
 // parallel region costs microseconds on an idle machine but a scheduler time
 // slice (milliseconds) when another process holds a core, and small loops
 // gain nothing from two threads.
-static inline bool worthThreads(Index n) { return n >= MpmSystem::parallelThreshold; }
+// With the serial back-end every loop runs on one thread.
+bool MpmSystem::worthThreads(Index n) const
+{
+    return options_.backend == Backend::openmp && n >= parallelThreshold;
+}
 
 // Runs fn(p) for every point, blocks of one colour in parallel, so that fn
 // may scatter to its stencil's nodes with plain stores (transfer/binning.hpp).
@@ -265,56 +281,15 @@ void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
 template<class K, int D, bool MassMomentum, bool Force, bool Apic>
 void MpmSystem::scatterKernel()
 {
-    auto& g = grid_;
-    const auto& P = particles_;
-    const Lattice& L = lattice_;
-    // Momentum is scattered with the mass, or alone (MUSL re-map).
-    constexpr bool Momentum = MassMomentum || !Force;
-    const bool grainVolume = options_.constantGrainVolume;
     std::vector<Real> invRho0(materials_.size());
     for (std::size_t i = 0; i < materials_.size(); ++i) invRho0[i] = 1.0/materials_[i]->rho0();
-    Real* gm = g.mass.data();
-    Real* gv = g.volume.data();
-    Real* gp[3] = {g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()};
-    Real* gf[3] = {g.force[0].data(), g.force[1].data(), g.force[2].data()};
-
+    const PointView P = pointView(particles_, L_, dx_);
+    const GridView g = gridView(grid_);
+    const Lattice& L = lattice_;
+    const bool grainVolume = options_.constantGrainVolume;
     forEachPointColoured([&](Index p)
     {
-        Stencil<K, D> s;
-        s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
-        const Real m = P.mass[p], vol = P.volume[p];
-        const Real solidVol = grainVolume ? m*invRho0[P.material[p]] : vol;
-        const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
-        Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-        if constexpr (Apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
-        const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
-        const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
-        s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
-        {
-            if constexpr (MassMomentum)
-            {
-                gm[I] += N*m;
-                gv[I] += N*solidVol;
-            }
-            if constexpr (Momentum)
-            {
-                Real u0 = v0, u1 = v1, u2 = v2;
-                if constexpr (Apic)
-                {
-                    u0 += Cp[0]*dx[0] + Cp[1]*dx[1] + Cp[2]*dx[2];
-                    u1 += Cp[3]*dx[0] + Cp[4]*dx[1] + Cp[5]*dx[2];
-                    u2 += Cp[6]*dx[0] + Cp[7]*dx[1] + Cp[8]*dx[2];
-                }
-                const Real Nm = N*m;
-                gp[0][I] += Nm*u0; gp[1][I] += Nm*u1; gp[2][I] += Nm*u2;
-            }
-            if constexpr (Force)
-            {
-                gf[0][I] -= vol*(sxx*dN[0] + sxy*dN[1] + sxz*dN[2]);
-                gf[1][I] -= vol*(sxy*dN[0] + syy*dN[1] + syz*dN[2]);
-                gf[2][I] -= vol*(sxz*dN[0] + syz*dN[1] + szz*dN[2]);
-            }
-        });
+        p2gPoint<K, D, MassMomentum, Force, Apic>(L, P, g, invRho0.data(), grainVolume, p, PlainAdd{});
     });
 }
 
@@ -332,16 +307,9 @@ void MpmSystem::updateMassTolerance()
 
 void MpmSystem::addGravity()
 {
-    // On the P2G masses, before the halo sum and the wall fold, like the
-    // internal force: a ghost's weight is reflected onto its image with its
-    // momentum, and each rank's share of a halo node is counted once.
-    const auto& gr = options_.gravity;
-    auto& g = grid_;
-    forEachActiveNode([&](Index I)
-    {
-        const Real m = g.mass[I];
-        for (int d = 0; d < 3; ++d) g.force[d][I] += m*gr[d];
-    });
+    const Real gravity[3] = {options_.gravity[0], options_.gravity[1], options_.gravity[2]};
+    const GridView g = gridView(grid_);
+    forEachActiveNode([&](Index I) { gravityNode(g, gravity, I); });
 }
 
 void MpmSystem::sumHalo(unsigned what)
@@ -472,15 +440,12 @@ void MpmSystem::fillGhosts(std::array<std::vector<Real>, 3>& v) const
     copyHalo({v[0].data(), v[1].data(), v[2].data()});
 }
 
-void MpmSystem::nodalVelocity(std::array<std::vector<Real>, 3>& v) const
+void MpmSystem::nodalVelocity(std::array<std::vector<Real>, 3>& v)
 {
+    const GridView g = gridView(grid_);
+    Real* const vp[3] = {v[0].data(), v[1].data(), v[2].data()};
     const Real tol = massTolerance_;
-    forEachActiveNode([&](Index I)
-    {
-        const Real m = grid_.mass[I];
-        const Real inv = m > tol ? 1.0/m : 0.0;
-        for (int d = 0; d < 3; ++d) v[d][I] = grid_.momentum[d][I]*inv;
-    });
+    forEachActiveNode([&](Index I) { lumpedVelocityNode(g, vp, tol, I); });
 }
 
 template<class K, int D>
@@ -651,76 +616,24 @@ void MpmSystem::gather(Real dt)
 template<class K, int D, bool Apic>
 void MpmSystem::gatherKernel(Real dt)
 {
-    auto& P = particles_;
+    const PointView P = pointView(particles_, L_, dx_);
+    const GridView g = gridView(grid_);
     const Lattice& L = lattice_;
-    const Index n = P.size();
+    const Index n = P.n;
     const Real alpha = options_.flipRatio;
-    constexpr bool lh = std::is_same<K, LinearHat>::value;
-    const Real* vn[3] = {grid_.velocity[0].data(), grid_.velocity[1].data(), grid_.velocity[2].data()};
-    const Real* vo[3] = {grid_.velocityOld[0].data(), grid_.velocityOld[1].data(), grid_.velocityOld[2].data()};
-
     #pragma omp parallel for schedule(static) if(worthThreads(n))
-    for (Index p = 0; p < n; ++p)
-    {
-        Stencil<K, D> s;
-        s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
-        Real vPic[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
-        Real Lg[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-        Real Bx[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-        s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
-        {
-            for (int i = 0; i < 3; ++i)
-            {
-                const Real vi = vn[i][I];
-                vPic[i] += N*vi;
-                if constexpr (!Apic) dv[i] += N*(vi - vo[i][I]);
-                for (int j = 0; j < 3; ++j)
-                {
-                    Lg[3*i + j] += vi*dN[j];
-                    if constexpr (Apic && !lh) Bx[3*i + j] += N*vi*dx[j];
-                }
-            }
-        });
-        for (int i = 0; i < 3; ++i)
-        {
-            P.v[i][p] = Apic ? vPic[i] : alpha*(P.v[i][p] + dv[i]) + (1.0 - alpha)*vPic[i];
-            dx_[i][p] = dt*vPic[i];
-        }
-        for (int e = 0; e < 9; ++e) L_[e][p] = Lg[e];
-        if constexpr (Apic)
-        {
-            // LH: the affine matrix is the velocity gradient (Jiang et al.);
-            // B-splines: C = B D^-1 with D constant per axis.
-            Real Dinv[3];
-            s.apicInertia(L, Dinv);
-            for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-            {
-                P.C[3*i + j][p] = lh ? Lg[3*i + j] : Bx[3*i + j]*Dinv[j];
-            }
-        }
-    }
+    for (Index p = 0; p < n; ++p) g2pPoint<K, D, Apic>(L, P, g, alpha, dt, p);
 }
 
 template<class K, int D>
 void MpmSystem::gradientFromGrid(const std::array<std::vector<Real>, 3>& v)
 {
-    const auto& P = particles_;
+    const PointView P = pointView(particles_, L_, dx_);
+    const Real* const vp[3] = {v[0].data(), v[1].data(), v[2].data()};
     const Lattice& L = lattice_;
-    const Index n = P.size();
+    const Index n = P.n;
     #pragma omp parallel for schedule(static) if(worthThreads(n))
-    for (Index p = 0; p < n; ++p)
-    {
-        Stencil<K, D> s;
-        s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
-        Real Lg[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-        s.forEach(L, [&](Index I, Real, const Real* dN, const Real*)
-        {
-            for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) Lg[3*i + j] += v[i][I]*dN[j];
-        });
-        for (int e = 0; e < 9; ++e) L_[e][p] = Lg[e];
-    }
+    for (Index p = 0; p < n; ++p) gradientPoint<K, D>(L, P, vp, p);
 }
 
 void MpmSystem::updateStress(Real dt)
@@ -812,62 +725,48 @@ void MpmSystem::stopIfNonFinite(Index firstBad, const char* what)
 // that would cross a wall is put back just inside it, and counted.
 void MpmSystem::movePoints()
 {
-    auto& P = particles_;
+    const PointView P = pointView(particles_, L_, dx_);
     const Lattice& L = domain_;   // walls and periodicity are the domain's
     const BoundarySpec& spec = boundary_.spec();
-    const Index n = P.size();
+    const Index n = P.n;
     Index firstBad = n;
     Index clamped = 0, leaving = 0;
     const bool frozen = options_.freezePositions;
     const bool open = boundary_.hasOpenFaces();
+    const bool periodic[3] = {boundary_.periodic(0), boundary_.periodic(1), boundary_.periodic(2)};
     leaving_.assign(open ? n : 0, -1);
     #pragma omp parallel for schedule(static) reduction(min:firstBad) reduction(+:clamped, leaving) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
-        Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
-        bool bad = false;
-        for (int a = 0; a < 3; ++a)
-        {
-            if (!std::isfinite(P.v[a][p]) || !std::isfinite(dx_[a][p])) { bad = true; continue; }
-            if (frozen || !L.solved[a]) continue;
-            x[a] += dx_[a][p];
-            if (boundary_.periodic(a))
-            {
-                const Real lo = L.origin[a], len = L.length(a);
-                x[a] = lo + std::fmod(std::fmod(x[a] - lo, len) + len, len);
-            }
-        }
-        if (bad) { firstBad = std::min(firstBad, p); continue; }
+        Real x[3];
+        const int flags = advancePoint(L, periodic, frozen, P, p, x);
+        if (flags & moveBad) { firstBad = std::min(firstBad, p); continue; }
         if (frozen) continue;
-        // Which faces the new position lies beyond: an open one lets the
-        // point out (the first such axis names the face), walls hold it.
-        int through = -1;
-        bool beyondWall = false;
-        for (int a = 0; a < 3 && through < 0; ++a)
+        if (flags & moveOutside)
         {
-            if (!L.solved[a] || boundary_.periodic(a)) continue;
-            const Real lo = L.origin[a], hi = lo + L.length(a);
-            if (x[a] >= lo && x[a] < hi) continue;
-            const int c = spec.conditionAtPosition(L, 2*a + (x[a] < lo ? 0 : 1), x);
-            if (isOpen(spec.conditions[c].type)) through = c;
-            else beyondWall = beyondWall || x[a] < lo || x[a] > hi;
+            // Which faces the new position lies beyond: an open one lets
+            // the point out (the first such axis names the face), walls
+            // hold it.
+            int through = -1;
+            bool beyondWall = false;
+            for (int a = 0; a < 3 && through < 0; ++a)
+            {
+                if (!L.solved[a] || periodic[a]) continue;
+                const Real lo = L.origin[a], hi = lo + L.length(a);
+                if (x[a] >= lo && x[a] < hi) continue;
+                const int c = spec.conditionAtPosition(L, 2*a + (x[a] < lo ? 0 : 1), x);
+                if (isOpen(spec.conditions[c].type)) through = c;
+                else beyondWall = beyondWall || x[a] < lo || x[a] > hi;
+            }
+            if (through >= 0)
+            {
+                leaving_[p] = through;
+                ++leaving;
+                continue;
+            }
+            clamped += beyondWall;
         }
-        if (through >= 0)
-        {
-            leaving_[p] = through;
-            ++leaving;
-            continue;
-        }
-        clamped += beyondWall;
-        for (int a = 0; a < 3; ++a)
-        {
-            if (!L.solved[a] || boundary_.periodic(a)) { P.x[a][p] = x[a]; continue; }
-            // A wall is impenetrable: a point that would cross it stops
-            // just inside (a large step, not normal operation).
-            const Real lo = L.origin[a], len = L.length(a);
-            const Real eps = 1e-9*L.h;
-            P.x[a][p] = std::min(std::max(x[a], lo + eps), lo + len - eps);
-        }
+        storePosition(L, periodic, P, p, x);
     }
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
@@ -881,9 +780,9 @@ void MpmSystem::movePoints()
         if (c < 0) continue;
         out.push_back(p);
         ++removedCount_[c];
-        removedMass_[c] += P.mass[p];
+        removedMass_[c] += particles_.mass[p];
     }
-    P.remove(out);
+    particles_.remove(out);
 }
 
 Index MpmSystem::migrate()

@@ -14,6 +14,7 @@
 #include "../grid/boundary.hpp"
 #include "../grid/gridState.hpp"
 #include "../grid/lattice.hpp"
+#include "../kernels/views.hpp"
 #include "../parallel/subdomain.hpp"
 #include "../particles/particles.hpp"
 #include "../transfer/binning.hpp"
@@ -185,6 +186,9 @@ private:
     template<class K, int D> void solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x,
                                             const std::vector<Real>* diag = nullptr);
     template<class Fn> void dispatch(Fn&& f);
+    // Whether a CPU loop over n items runs on several threads (openmp and
+    // n >= parallelThreshold)
+    bool worthThreads(Index n) const;
     template<class Fn> void forEachPointColoured(Fn&& fn) const;
     // Bins the points and builds this step's active region
     void binPoints();
@@ -208,7 +212,7 @@ private:
     void foldVector(std::array<std::vector<Real>, 3>& a) const;
     void decideWallContact(Real dt, bool withForce);
     void fillGhosts(std::array<std::vector<Real>, 3>& v) const;
-    void nodalVelocity(std::array<std::vector<Real>, 3>& v) const;
+    void nodalVelocity(std::array<std::vector<Real>, 3>& v);
     void updateMassTolerance();
     // m g on every node, from the P2G masses (before the halo sum and fold)
     void addGravity();

@@ -1,5 +1,6 @@
 // Algorithmic choices of one MPM step, as selected in constant/mpmProperties.
 #pragma once
+#include "../backend/backend.hpp"
 #include "../shapeFunctions/shapeFunctions.hpp"
 #include <array>
 #include <string>
@@ -63,6 +64,8 @@ struct StepOptions
     // thread count; against a run without it they differ by round-off (a
     // point entering a block is summed in its storage place).
     bool reorderPoints = true;
+    // Who launches the kernel bodies (backend/backend.hpp)
+    Backend backend = Backend::openmp;
 };
 
 } // namespace mpm

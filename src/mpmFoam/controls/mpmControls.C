@@ -27,7 +27,7 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
             "massMatrix", "consistentMassIterations", "freezePositions",
             "logInterval", "threadMinLoopSize", "timeStep",
             "materials", "walls", "coupling", "pointOutput", "diagnostics",
-            "accuracyFront"
+            "accuracyFront", "backend"
         },
         "mpmProperties"
     );
@@ -61,6 +61,24 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
     {
         step.consistentMassIterations =
             int(readBounded(d, "consistentMassIterations", 2, 1, 50));
+    }
+    step.backend = readChoice
+    (
+        d, "backend", mpm::parseBackend,
+        [](mpm::Backend b) { return mpm::backendName(b); },
+        mpm::validBackendNames(), mpm::Backend::openmp
+    );
+    {
+        // A valid name this build or machine cannot run: say why here,
+        // before any point is seeded or field read
+        const std::string why = mpm::backendUnavailableReason(step.backend);
+        if (!why.empty())
+        {
+            FatalIOErrorInFunction(d)
+                << "backend " << mpm::backendName(step.backend)
+                << " cannot run: " << why.c_str() << nl
+                << "Valid backends here: serial openmp" << exit(FatalIOError);
+        }
     }
     step.freezePositions = d.getOrDefault<bool>("freezePositions", false);
     Info<< "    freezePositions " << step.freezePositions << nl;

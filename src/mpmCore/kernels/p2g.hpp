@@ -1,0 +1,69 @@
+// P2G body of one material point: mass, grain or current volume, momentum
+// (with the APIC affine part) and the internal force -V sigma grad N, added
+// to the nodes of the point's stencil.
+//
+// `add(array, node, value)` performs array[node] += value: a plain store on
+// the CPU, where the launcher runs the points of one colour at a time so no
+// two threads share a node (transfer/binning.hpp), an atomicAdd on the GPU.
+// The choices are template arguments, so the node loop has no branches.
+#pragma once
+#include "../transfer/stencil.hpp"
+#include "views.hpp"
+
+namespace mpm {
+
+template<class K, int D, bool MassMomentum, bool Force, bool Apic, class Add>
+MPM_HOST_DEVICE inline void p2gPoint
+(
+    const Lattice& L, const PointView& P, const GridView& g,
+    const Real* invRho0, bool grainVolume, Index p, Add add
+)
+{
+    // Momentum is scattered with the mass, or alone (MUSL re-map).
+    constexpr bool Momentum = MassMomentum || !Force;
+    Stencil<K, D> s;
+    s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+    const Real m = P.mass[p], vol = P.volume[p];
+    const Real solidVol = grainVolume ? m*invRho0[P.material[p]] : vol;
+    const Real v0 = P.v[0][p], v1 = P.v[1][p], v2 = P.v[2][p];
+    Real Cp[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    if constexpr (Apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
+    const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
+    const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
+    s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
+    {
+        if constexpr (MassMomentum)
+        {
+            add(g.mass, I, N*m);
+            add(g.volume, I, N*solidVol);
+        }
+        if constexpr (Momentum)
+        {
+            Real u0 = v0, u1 = v1, u2 = v2;
+            if constexpr (Apic)
+            {
+                u0 += Cp[0]*dx[0] + Cp[1]*dx[1] + Cp[2]*dx[2];
+                u1 += Cp[3]*dx[0] + Cp[4]*dx[1] + Cp[5]*dx[2];
+                u2 += Cp[6]*dx[0] + Cp[7]*dx[1] + Cp[8]*dx[2];
+            }
+            const Real Nm = N*m;
+            add(g.momentum[0], I, Nm*u0);
+            add(g.momentum[1], I, Nm*u1);
+            add(g.momentum[2], I, Nm*u2);
+        }
+        if constexpr (Force)
+        {
+            add(g.force[0], I, -vol*(sxx*dN[0] + sxy*dN[1] + sxz*dN[2]));
+            add(g.force[1], I, -vol*(sxy*dN[0] + syy*dN[1] + syz*dN[2]));
+            add(g.force[2], I, -vol*(sxz*dN[0] + syz*dN[1] + szz*dN[2]));
+        }
+    });
+}
+
+// The CPU's add: a plain store (the colouring makes it race-free)
+struct PlainAdd
+{
+    MPM_HOST_DEVICE void operator()(Real* a, Index I, Real x) const { a[I] += x; }
+};
+
+} // namespace mpm
