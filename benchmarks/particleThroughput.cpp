@@ -1,7 +1,10 @@
 // Particle throughput of the MPM step: a 3D elastic block, 32^3 cells,
 // 8 points per cell (262144 points), linear-elastic, gravity, USL, FLIP 0.99.
 // Prints particle-steps/s for LH, QBS and CBS at 1 and 2 OpenMP threads, all
-// in one run so the ratios share the machine's state.
+// in one run so the ratios share the machine's state. Where the build has
+// the cuda back-end and a GPU is present, then prints a cuda row per shape
+// function with its ratio to 1 CPU thread (measured again next to it);
+// otherwise it says why there is none.
 //
 //   build/benchmarks/particleThroughput [cells=32] [steps=20] [shuffle=0] [reorder=1]
 #include "constitutive/constitutiveLaw.hpp"
@@ -20,7 +23,7 @@ using namespace mpm;
 namespace {
 
 
-MpmSystem makeBlock(ShapeKind shape, int n, bool reorder, bool shuffle)
+MpmSystem makeBlock(ShapeKind shape, int n, bool reorder, bool shuffle, Backend backend = Backend::openmp)
 {
     // The block is n^3 cells; the lattice adds 4 empty cells on each side.
     const int m = n + 8;
@@ -32,6 +35,7 @@ MpmSystem makeBlock(ShapeKind shape, int n, bool reorder, bool shuffle)
     o.shape = shape;
     o.gravity = {0, 0, -9.81};
     o.reorderPoints = reorder;
+    o.backend = backend;
     MpmSystem s;
     s.setup(L, b, o);
     s.materials().push_back(makeLaw("linearElastic", {{"rho", 1000}, {"E", 1e6}, {"nu", 0.3}}));
@@ -93,6 +97,33 @@ int main(int argc, char** argv)
         std::printf("%-18s %8d %10lld %12.2f %14.3f %10.1f %10.1f %10.1f %10.1f\n", shapeName(shape), threads,
                     (long long)s.particles().size(), 1e3*sec/steps, s.particles().size()*double(steps)/sec/1e6,
                     100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot);
+    }
+    // The cuda back-end (docs/gpu.md): the point work on the GPU, the node
+    // work and the transfers' packing on 1 CPU thread
+    const std::string noGpu = backendUnavailableReason(Backend::cuda);
+    if (!noGpu.empty())
+    {
+        std::printf("# no cuda rows: %s\n", noGpu.c_str());
+        return 0;
+    }
+    std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s %9s\n", "shape", "backend", "points",
+                "ms/step", "Mpoint-step/s", "P2G%", "nodal%", "G2P%", "stress%", "x1thread");
+    omp_set_num_threads(1);
+    for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
+    {
+        double cpuRate = 0;
+        for (Backend b : {Backend::serial, Backend::cuda})
+        {
+            MpmSystem s = makeBlock(shape, n, reorder, shuffle, b);
+            const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), 1, steps);
+            const StepTimers& t = r.phases;
+            const double tot = t.total();
+            const double rate = s.particles().size()*double(steps)/r.seconds/1e6;
+            if (b == Backend::serial) cpuRate = rate;
+            std::printf("%-18s %8s %10lld %12.2f %14.3f %10.1f %10.1f %10.1f %10.1f %9.2f\n", shapeName(shape),
+                        backendName(b), (long long)s.particles().size(), 1e3*r.seconds/steps, rate,
+                        100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot, rate/cpuRate);
+        }
     }
     return 0;
 }

@@ -25,6 +25,11 @@ std::string cudaUnavailableReason()
     {
         int n = 0;
         const cudaError_t e = cudaGetDeviceCount(&n);
+        if (e == cudaErrorInsufficientDriver || e == cudaErrorNoDevice)
+        {
+            return reason("cudaGetDeviceCount", e)
+                + ": this machine has no NVIDIA GPU with a driver for this CUDA version";
+        }
         if (e != cudaSuccess) return reason("cudaGetDeviceCount", e);
         if (n == 0) return "the cuda back-end needs a usable GPU: no CUDA device was found";
         // The build's architectures (MPM_CUDA_ARCHITECTURES) must include
