@@ -52,6 +52,11 @@ void MpmSystem::setup
     grid_.resize(lattice_.nNodes);
     region_ = ActiveRegion();
     region_.setDense(!options_.sparseGrid);
+    // Available (checked above): the device mirror, sized by the first step
+    if (options_.backend != Backend::cuda) device_.reset();
+#ifdef MPM_HAVE_CUDA
+    else if (!device_) device_ = std::make_shared<DeviceStep>();
+#endif
 }
 
 int MpmSystem::stencilReach(ShapeKind kind)
@@ -192,6 +197,9 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
 template<class K, int D>
 void MpmSystem::stepImpl(Real dt)
 {
+#ifdef MPM_HAVE_CUDA
+    if (device_) { stepOnDevice<K, D>(dt); return; }
+#endif
     const Index n = particles_.size();
     for (auto& a : L_) a.resize(n);
     for (auto& a : dx_) a.resize(n);
@@ -706,7 +714,6 @@ void MpmSystem::movePoints()
 {
     const PointView P = pointView(particles_, L_, dx_);
     const Lattice& L = domain_;   // walls and periodicity are the domain's
-    const BoundarySpec& spec = boundary_.spec();
     const Index n = P.n;
     Index firstBad = n;
     Index clamped = 0, leaving = 0;
@@ -723,20 +730,8 @@ void MpmSystem::movePoints()
         if (frozen) continue;
         if (flags & moveOutside)
         {
-            // Which faces the new position lies beyond: an open one lets
-            // the point out (the first such axis names the face), walls
-            // hold it.
-            int through = -1;
             bool beyondWall = false;
-            for (int a = 0; a < 3 && through < 0; ++a)
-            {
-                if (!L.solved[a] || periodic[a]) continue;
-                const Real lo = L.origin[a], hi = lo + L.length(a);
-                if (x[a] >= lo && x[a] < hi) continue;
-                const int c = spec.conditionAtPosition(L, 2*a + (x[a] < lo ? 0 : 1), x);
-                if (isOpen(spec.conditions[c].type)) through = c;
-                else beyondWall = beyondWall || x[a] < lo || x[a] > hi;
-            }
+            const int through = exitCondition(x, beyondWall);
             if (through >= 0)
             {
                 leaving_[p] = through;
@@ -749,7 +744,32 @@ void MpmSystem::movePoints()
     }
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
+    removeLeaving(leaving);
+}
+
+// Which faces the new position x lies beyond: an open one lets the point
+// out (the first such axis names the face), walls hold it.
+int MpmSystem::exitCondition(const Real x[3], bool& beyondWall) const
+{
+    const Lattice& L = domain_;
+    const BoundarySpec& spec = boundary_.spec();
+    int through = -1;
+    for (int a = 0; a < 3 && through < 0; ++a)
+    {
+        if (!L.solved[a] || boundary_.periodic(a)) continue;
+        const Real lo = L.origin[a], hi = lo + L.length(a);
+        if (x[a] >= lo && x[a] < hi) continue;
+        const int c = spec.conditionAtPosition(L, 2*a + (x[a] < lo ? 0 : 1), x);
+        if (isOpen(spec.conditions[c].type)) through = c;
+        else beyondWall = beyondWall || x[a] < lo || x[a] > hi;
+    }
+    return through;
+}
+
+void MpmSystem::removeLeaving(Index leaving)
+{
     if (leaving == 0) return;
+    const Index n = particles_.size();
     // In index order, serially: the removed sums do not depend on threads
     std::vector<Index> out;
     out.reserve(leaving);
@@ -763,6 +783,179 @@ void MpmSystem::movePoints()
     }
     particles_.remove(out);
 }
+
+#ifdef MPM_HAVE_CUDA
+// The cuda back-end's step (backend/deviceStep.hpp: the data flow and its
+// cost). The point work runs on the device with the CPU's kernel bodies;
+// the node work between the transfers is stepImpl's, here on the host.
+template<class K, int D>
+void MpmSystem::stepOnDevice(Real dt)
+{
+    DeviceStep& dev = *device_;
+    const Index n = particles_.size();
+    for (auto& a : L_) a.resize(n);
+    for (auto& a : dx_) a.resize(n);
+    updateMassTolerance();
+    const StressUpdate order = options_.stressUpdate;
+    const bool usf = order == StressUpdate::USF;
+    const bool apic = options_.transfer == Transfer::apic;
+    const bool grainVolume = options_.constantGrainVolume;
+    const ShapeKind shape = options_.shape;
+    const unsigned massMomentum = DeviceStep::gridMass | DeviceStep::gridVolume | DeviceStep::gridMomentum;
+    const unsigned force = DeviceStep::gridForce;
+    std::vector<LawParams> laws(materials_.size());
+    std::vector<Real> invRho0(materials_.size());
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+    {
+        laws[m] = materials_[m]->params();
+        invRho0[m] = 1.0/materials_[m]->rho0();
+    }
+    {
+        ScopedTimer t(timers_.p2g);
+        binPoints();   // first: the points go up in block order
+        dev.setMaterials(laws);
+        dev.uploadPoints(pointView(particles_, L_, dx_), apic);
+        dev.setActiveNodes(lattice_.nNodes, region_.nodes());
+        dev.zeroGrid(massMomentum | force);
+        dev.p2g(lattice_, shape, true, !usf, apic, invRho0, grainVolume);
+        dev.gridToHost(gridView(grid_), massMomentum | (usf ? 0u : force));
+    }
+    {
+        ScopedTimer t(timers_.nodal);
+        addGravity();
+        sumHalo(foldMass | foldMomentum | (usf ? 0u : foldForce));
+        foldGhosts(foldMass);
+        decideWallContact(dt, !usf);
+        foldGhosts(foldMomentum | (usf ? 0u : foldForce));
+        massToVelocity<K, D>(grid_.velocityOld);
+        fillGhosts(grid_.velocityOld);
+    }
+    if (usf)
+    {
+        {
+            ScopedTimer t(timers_.g2p);
+            dev.gridFromHost(gridView(grid_), DeviceStep::gridVelocityOld);
+            dev.gradient(lattice_, shape, true);
+        }
+        { ScopedTimer t(timers_.constitutive); stressOnDevice(dt); }
+        {
+            // The internal force, added here to the gravity already there
+            ScopedTimer t(timers_.p2g);
+            dev.zeroGrid(force);
+            dev.p2g(lattice_, shape, false, true, apic, invRho0, grainVolume);
+            dev.gridToHost(gridView(grid_), force, true);
+        }
+        { ScopedTimer t(timers_.nodal); sumHalo(foldForce); foldGhosts(foldForce); }
+    }
+    {
+        ScopedTimer t(timers_.nodal);
+        nodalUpdate<K, D>(dt);
+    }
+    {
+        ScopedTimer t(timers_.g2p);
+        dev.gridFromHost(gridView(grid_), DeviceStep::gridVelocity | (apic ? 0u : unsigned(DeviceStep::gridVelocityOld)));
+        dev.g2p(lattice_, shape, apic, options_.flipRatio, dt);
+        dev.synchronise();
+    }
+    if (order == StressUpdate::MUSL)
+    {
+        {
+            ScopedTimer t(timers_.p2g);
+            dev.zeroGrid(DeviceStep::gridMomentum);
+            dev.p2g(lattice_, shape, false, false, apic, invRho0, grainVolume);
+            dev.gridToHost(gridView(grid_), DeviceStep::gridMomentum);
+        }
+        {
+            ScopedTimer t(timers_.nodal);
+            sumHalo(foldMomentum);
+            foldGhosts(foldMomentum);
+            massToVelocity<K, D>(grid_.velocity);
+            applyFriction(grid_.velocity);
+            fillGhosts(grid_.velocity);
+        }
+        {
+            ScopedTimer t(timers_.g2p);
+            dev.gridFromHost(gridView(grid_), DeviceStep::gridVelocity);
+            dev.gradient(lattice_, shape, false);
+            dev.synchronise();
+        }
+    }
+    if (!usf)
+    {
+        ScopedTimer t(timers_.constitutive);
+        stressOnDevice(dt);
+    }
+    {
+        ScopedTimer t(timers_.g2p);
+        movePointsOnDevice(apic);
+    }
+}
+
+// The stress update on the device; the inverted point of lowest id is
+// found on the host after the points come back (movePointsOnDevice)
+void MpmSystem::stressOnDevice(Real dt)
+{
+    const DeviceStep::StressResult r = device_->stress(dt);
+    stopIfNonFinite(r.firstBad, "stress or deformation");
+    inverted_ = InvertedPoints{};
+    inverted_.count = r.inverted;
+}
+
+// The advance on the device, then the points come back; the few beyond a
+// face are classified here like movePoints does (removed or held)
+void MpmSystem::movePointsOnDevice(bool apic)
+{
+    const bool periodic[3] = {boundary_.periodic(0), boundary_.periodic(1), boundary_.periodic(2)};
+    const bool frozen = options_.freezePositions;
+    const Index flagged = device_->move(domain_, periodic, frozen, moveFlags_);
+    const PointView P = pointView(particles_, L_, dx_);
+    device_->downloadPoints(P, apic);
+    if (inverted_.count > 0) findFirstInverted();
+    if (flagged == 0) return;
+    const Index n = P.n;
+    Index firstBad = n, clamped = 0, leaving = 0;
+    leaving_.assign(boundary_.hasOpenFaces() ? n : 0, -1);
+    for (Index p = 0; p < n; ++p)
+    {
+        const int flags = moveFlags_[p];
+        if (flags & moveBad) { firstBad = std::min(firstBad, p); continue; }
+        if (frozen || !(flags & moveOutside)) continue;
+        // The device left the unclamped new position
+        const Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
+        bool beyondWall = false;
+        const int through = exitCondition(x, beyondWall);
+        if (through >= 0)
+        {
+            leaving_[p] = through;
+            ++leaving;
+            continue;
+        }
+        clamped += beyondWall;
+        storePosition(domain_, periodic, P, p, x);
+    }
+    stopIfNonFinite(firstBad, "velocity");
+    clamped_ += clamped;
+    removeLeaving(leaving);
+}
+
+void MpmSystem::findFirstInverted()
+{
+    const Particles& P = particles_;
+    std::int64_t first = std::numeric_limits<std::int64_t>::max();
+    Index at = -1;
+    for (Index p = 0; p < P.size(); ++p)
+    {
+        if (!(P.J(p) <= 0 || P.volume[p] <= 0) || P.id[p] >= first) continue;
+        first = P.id[p];
+        at = p;
+    }
+    if (at < 0) return;
+    inverted_.id = first;
+    inverted_.material = P.material[at];
+    inverted_.J = P.J(at);
+    inverted_.volume = P.volume[at];
+}
+#endif // MPM_HAVE_CUDA
 
 Index MpmSystem::migrate()
 {

@@ -10,6 +10,7 @@
 // number of solved directions.
 #pragma once
 #include "../constitutive/constitutiveLaw.hpp"
+#include "../backend/deviceStep.hpp"
 #include "../grid/activeRegion.hpp"
 #include "../grid/boundary.hpp"
 #include "../grid/gridState.hpp"
@@ -176,6 +177,18 @@ public:
 
 private:
     template<class K, int D> void stepImpl(Real dt);
+    // The cuda back-end (backend/deviceStep.hpp): the step with the point
+    // work on the device and the node work here, as in stepImpl
+    template<class K, int D> void stepOnDevice(Real dt);
+    void stressOnDevice(Real dt);
+    void movePointsOnDevice(bool apic);
+    // The open condition through which a point beyond a face at x leaves,
+    // or -1 when walls hold it (beyondWall: it lies past one)
+    int exitCondition(const Real x[3], bool& beyondWall) const;
+    // Removes the `leaving` points marked in leaving_, counted per condition
+    void removeLeaving(Index leaving);
+    // inverted_ for its count: the inverted point of lowest id
+    void findFirstInverted();
     // P2G; massMomentum (a fresh P2G) must come right after binPoints()
     template<class K, int D> void scatter(bool massMomentum, bool force, bool velocityOnly);
     template<class K, int D, bool MassMomentum, bool Force, bool Apic> void scatterKernel();
@@ -243,6 +256,11 @@ private:
     Index clamped_ = 0;
     // Per point during movePoints: the open condition it left through, or -1
     std::vector<int> leaving_;
+    // The cuda back-end's device mirror and step (null for the CPU ones);
+    // shared_ptr: its deleter is bound where it is made, so this header
+    // compiles the same with and without CUDA
+    std::shared_ptr<DeviceStep> device_;
+    std::vector<int> moveFlags_;
 
     // Scratch per point: velocity gradient and displacement over the step.
     std::array<std::vector<Real>, 9> L_;
