@@ -2,6 +2,7 @@
 #include "dragForce.H"
 #include "stableCourant.H"
 #include "clockTime.H"
+#include "cpuTime.H"
 #include "stability/coupledAdvice.hpp"
 
 namespace
@@ -72,6 +73,7 @@ void Foam::printCoupledTimeStepAdvice
 
     // Every rank has the same inputs: the master alone analyses
     const clockTime timer;
+    cpuTime cpu;
     if (Pstream::master())
     {
         const auto law = materials.create(material);
@@ -83,5 +85,6 @@ void Foam::printCoupledTimeStepAdvice
     }
     Info<< "  (material " << materials.names()[material] << ", alpha.solid "
         << alphaS << ": the largest at the start; the analysis took "
-        << timer.elapsedTime() << " s)" << nl << endl;
+        << timer.elapsedTime() << " s, CPU " << cpu.elapsedCpuTime() << " s)"
+        << nl << endl;
 }
