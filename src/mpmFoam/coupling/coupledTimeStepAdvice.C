@@ -83,6 +83,15 @@ void Foam::printCoupledTimeStepAdvice
             Info<< line.c_str() << nl;
         }
     }
+    // As for the pure-MPM check (stableCourant.H): the analysis has lumped
+    // mass and PIC/FLIP transfer only
+    const mpm::StepOptions& o = mpm.controls().step;
+    if (o.transfer == mpm::Transfer::apic || o.massMatrix == mpm::MassMatrix::consistent)
+    {
+        Info<< "  (the analysis takes lumped mass and PIC/FLIP transfer; this case's "
+            << (o.transfer == mpm::Transfer::apic ? "APIC transfer" : "consistent mass")
+            << " is not analysed)" << nl;
+    }
     Info<< "  (material " << materials.names()[material] << ", alpha.solid "
         << alphaS << ": the largest at the start; the analysis took "
         << timer.elapsedTime() << " s, CPU " << cpu.elapsedCpuTime() << " s)"
