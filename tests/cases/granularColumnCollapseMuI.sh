@@ -9,8 +9,9 @@
 # plastic flow. The runout is reported, not checked against Lube et al.'s
 # band [1.6, 3.6] (RUNOUT_BAND=0): with the friction floor delivering its
 # full coefficient, mu(I) (glass beads, static friction tan 20.9 deg) runs
-# out to 4.05 at this resolution (Lube: 2.4-3.0) and further on finer
-# grids (tutorial README: 3.32, 4.05, 4.52 at h = 0.02, 0.01, 0.005). It
+# out to 3.96 here (Lube: 2.4-3.0; the front stops 1 cm short of the right
+# wall) and further on finer grids (tutorial README, longer domain: 3.30,
+# 4.03, 4.50 at h = 0.02, 0.01, 0.005). It
 # passed the band before only because the friction wall's defect made the
 # floor rougher. A frictionless floor still fails here: the material
 # reaches the right wall and is not at rest at t = 1 s.

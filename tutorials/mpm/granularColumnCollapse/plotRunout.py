@@ -2,9 +2,9 @@
 """Runout against aspect ratio for the runs of ./sweepAspectRatio.
 
 For each run directory (sweep/<material>_a<a>_h<h>) measures the runout
-(L_f - a0)/a0 with plotProfile.measure (front of the connected deposit:
-no gap wider than two point spacings along x; the farthest point's runout
-is printed beside it), prints it with Lube et al.'s (2005)
+(L_f - a0)/a0 with plotProfile.measure (front of the deposit: 99.9 % of
+the mass behind it; the farthest point's runout is printed beside it),
+prints it with Lube et al.'s (2005)
 quasi-2D law
 
     (L_f - a0)/a0 = 1.2 a          a < 2.3
