@@ -57,6 +57,11 @@ c=$(freshCopy unknownFluidResponse)
 sed -i 's/mode        twoWay;/mode        twoWay;\n    fluidResponse frozn;/' "$(props "$c")"
 expectFailure "unknown fluidResponse" "Valid fluidResponse choices: linearised frozen" runIn "$c" mpmFoam
 
+c=$(freshCopy badTimeStepAdvice)
+sed -i 's/mode        twoWay;/mode        twoWay;\n    timeStepAdvice maybe;/' "$(props "$c")"
+expectFailure "timeStepAdvice not a switch" "Expected 'true/false', 'on/off' ... found maybe" runIn "$c" mpmFoam
+expectFailure "timeStepAdvice not a switch names the file and keyword" "mpmProperties.coupling.timeStepAdvice at line" runIn "$c" mpmFoam
+
 c=$(freshCopy noCoupling)
 sed -i '/^coupling/,/^}/d' "$(props "$c")"
 expectFailure "fluid case without coupling dictionary" "has no coupling" runIn "$c" mpmFoam
@@ -67,7 +72,7 @@ c=$(freshCopy misspeltCoupling)
 sed -i 's/alphaMax    0.63;/alphaMx     0.63;/' "$(props "$c")"
 expectFailure "misspelt coupling keyword" "Unknown keyword 'alphaMx' in coupling; did you mean 'alphaMax'\?" runIn "$c" mpmFoam
 expectFailure "misspelt coupling keyword: file and valid keywords" "file: .*constant/mpmProperties.coupling at line" runIn "$c" mpmFoam
-expectFailure "misspelt coupling keyword lists the valid keywords" "Valid keywords: mode forces alphaMax subCycles fluidResponse$" runIn "$c" mpmFoam
+expectFailure "misspelt coupling keyword lists the valid keywords" "Valid keywords: mode forces alphaMax subCycles fluidResponse timeStepAdvice$" runIn "$c" mpmFoam
 
 c=$(freshCopy misspeltDrag)
 sed -i 's/drag    { model Ergun; d 1e-3; }/drag    { model Ergun; d 1e-3; alphaFmin 0.1; }/' "$(props "$c")"

@@ -10,7 +10,8 @@
 #   - collapse: final max point height < 0.8 h0, runout L_f - a0 > a0
 #   - rest: final max |U| (summary.dat) < 0.02 sqrt(g h0)
 #   - plasticity: max equivalent plastic strain > 0.1
-#   - runout (L_f - a0)/a0 within [1.6, 3.6]: the empirical 2D laws give
+#   - runout (L_f - a0)/a0 (front: 99.9 % of the mass behind it, plotProfile.py)
+#     within [1.6, 3.6]: the empirical 2D laws give
 #     1.2 a = 2.4 (a < 1.8) and 1.9 a^(2/3) = 3.0 (a > 2.8) at a = 2, with a
 #     material-dependent scatter of the prefactors of some 20 %; the band is
 #     2/3 of the lower law to 1.2 x the upper one. It rejects a frictionless
@@ -19,6 +20,8 @@
 #
 # Env: MPM_CASE_SRC  case to copy instead of the tutorial (for checking that
 #                    the test catches broken variants);
+#      RUNOUT_BAND=0 report the runout without checking the band (a law
+#                    known not to match Lube's law at this resolution);
 #      KEEP_CASE=1   keep the temporary directory.
 # Exit status non-zero on any failure. Takes ~20-40 s.
 #------------------------------------------------------------------------------
@@ -52,6 +55,7 @@ PYTHONPATH="$root/etc/python${PYTHONPATH:+:$PYTHONPATH}" "$py" plotProfile.py --
 cat log.plotProfile
 
 PYTHONPATH="$root/etc/python${PYTHONPATH:+:$PYTHONPATH}" "$py" - <<'EOF'
+import os
 import re
 import sys
 
@@ -95,15 +99,20 @@ check(out == 0, "points outside the box %s-%s at t = %s: %d" % (lo, hi, t1, out)
 
 # Collapse and runout
 dp = float(np.min(np.diff(np.unique(np.round(x0[:, 0], 10)))))
-Lf = x1[:, 0].max() + dp/2
+sys.path.insert(0, ".")
+from plotProfile import mass_front   # the tutorial's front definition
+Lf = mass_front(x1, m1)
 ymax = x1[:, 1].max()
 runout = (Lf - A0)/A0
 check(ymax < 0.8*H0, "collapsed: final max point height %.4f m < 0.8 h0 = %.3f m" % (ymax, 0.8*H0))
 check(Lf - A0 > A0, "spread: runout L_f - a0 = %.4f m > a0 = %.2f m" % (Lf - A0, A0))
 a = H0/A0
-check(1.6 <= runout <= 3.6,
-      "runout (L_f - a0)/a0 = %.3f in [1.6, 3.6] (empirical 1.2a = %.2f, 1.9a^(2/3) = %.2f)"
-      % (runout, 1.2*a, 1.9*a**(2/3)))
+band = "runout (L_f - a0)/a0 = %.3f in [1.6, 3.6] (empirical 1.2a = %.2f, 1.9a^(2/3) = %.2f)" \
+    % (runout, 1.2*a, 1.9*a**(2/3))
+if os.environ.get("RUNOUT_BAND", "1") == "1":
+    check(1.6 <= runout <= 3.6, band)
+else:
+    print("  info %s: not checked (RUNOUT_BAND=0)" % band)
 print("       final height H_f/a0 = %.3f (empirical ~a^(2/5) = %.2f; not checked)"
       % ((ymax + dp/2)/A0, a**0.4))
 

@@ -17,9 +17,9 @@
 #     tutorial, finer: -1.4 % against -15 %);
 #   - sand: C = W/(rho sqrt(g) D^1.5) within [0.6, 1.1]: the tutorial's
 #     0.83 at the same D/h = 10, below Beverloo's 2D 1.03 (with k d = 0)
-#     since a slot resolved by 10 cells loses about 2 cells of width
-#     (docs/openBoundaries.md); a wall at the slot gives 0, a fluid-like
-#     discharge over 2;
+#     since C still rises with the cells across the slot (it converges
+#     slowly: docs/openBoundaries.md); a wall at the slot gives 0, a
+#     fluid-like discharge over 2;
 #   - fluid: the rate falls like sqrt(H): W2/W1 within 0.05 of sqrt(H2/H1),
 #     and by more than 5 %;
 #   - both: the mass balance closes on every row.

@@ -5,7 +5,8 @@ analysis (docs/stabilityAnalysis.md section 7b).
 Reads the case's dictionaries (controlDict deltaT, blockMeshDict h,
 transportProperties, mpmProperties: shape, flipRatio, stressUpdate,
 timeStep courant, coupling mode and forces, the first material with a
-drag; mpmSetParticlesDict: the largest solidFraction) and runs
+drag; mpmSetParticlesDict: the largest solidFraction; fvSolution: PIMPLE
+nCorrectors) and runs
 `mpmStabilityAnalysis --model coupled --advise` with them, which evaluates
 beta and the wave speed with the core's own laws. Printed: the MPM step and
 its margin to the pure-MPM limit, the sub-cycles of the shipped rule, max
@@ -78,6 +79,8 @@ def main():
     transport = read(case, "constant", "transportProperties")
     mpm = read(case, "constant", "mpmProperties")
     seeding = read(case, "system", "mpmSetParticlesDict")
+    # PIMPLE nCorrectors (OpenFOAM's default 1), as the solver's advice takes it
+    correctors = read(case, "system", "fvSolution").get("PIMPLE", {}).get("nCorrectors", ["1"])[0]
     h = option("--h") or (mesh["h"][0] if "h" in mesh else None)
     if h is None:
         sys.exit("adviseCoupledCase: blockMeshDict has no 'h': give the cell size with --h")
@@ -102,7 +105,8 @@ def main():
             "--h", h, "--fluid-dt", control["deltaT"][0], "--aS", a_s, "--courant", courant,
             "--shape", shape, "--alpha", mpm.get("flipRatio", ["0"])[0],
             "--scheme", mpm.get("stressUpdate", ["USL"])[0],
-            "--mode", coupling.get("mode", ["twoWay"])[0], "--forces", ",".join(forces)]
+            "--mode", coupling.get("mode", ["twoWay"])[0], "--forces", ",".join(forces),
+            "--correctors", correctors]
     print(f"case {case}: material {name} ({law}), " + " ".join(args[3:]))
     sys.stdout.flush()
     sys.exit(subprocess.run(args).returncode)

@@ -127,7 +127,7 @@ void Boundary::build
         int inletCondition = -1;
         std::array<Real, 3> sign{1, 1, 1};
         int reflections = 0, unilateralAxis = -1;
-        Real outward = 0;
+        Real outward = 0, mu = 0;
         // Every out-of-range coordinate reflected, open or not: the real
         // cell whose owner folds this node (decomposed runs), as the
         // Subdomain decides the node's owner.
@@ -156,7 +156,11 @@ void Boundary::build
             r[a] = full[a];
             ++reflections;
             if (wc.type == WallType::noSlip) { for (auto& s : sign) s = -s; }
-            else { sign[a] = -sign[a]; unilateralAxis = a; outward = low ? -1 : 1; }
+            else
+            {
+                sign[a] = -sign[a]; unilateralAxis = a; outward = low ? -1 : 1;
+                mu = wc.type == WallType::friction ? wc.frictionCoefficient : 0.0;
+            }
         }
         if (!beyond) continue;
         if (!isGhost)
@@ -181,7 +185,8 @@ void Boundary::build
         const Index image = B.realNode(r[0] - offset[0], r[1] - offset[1], r[2] - offset[2]);
         ghosts_.push_back
         (
-            {B.node(i, j, k), image, sign, unilateralAxis, unilateralAxis >= 0 ? outward : 0.0}
+            {B.node(i, j, k), image, sign, unilateralAxis, unilateralAxis >= 0 ? outward : 0.0,
+             unilateralAxis >= 0 ? mu : 0.0}
         );
     }
 

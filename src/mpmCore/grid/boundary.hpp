@@ -72,7 +72,10 @@ public:
     // unilateralAxis >= 0 marks the ghost of a single slip/friction wall:
     // its normal reflection applies only while material moves towards the
     // wall (contact), so material can leave the wall. outward is the
-    // direction from the image into the wall along that axis.
+    // direction from the image into the wall along that axis. mu: the
+    // Coulomb coefficient of a friction wall's unilateral ghost (else 0):
+    // the normal impulse its fold delivers to the image bounds the image's
+    // friction.
     struct Ghost
     {
         Index ghost;
@@ -80,6 +83,7 @@ public:
         std::array<Real, 3> sign;
         int unilateralAxis = -1;
         Real outward = 0;
+        Real mu = 0;
     };
     struct FrictionNode { Index node; int axis; Real outward; Real mu; };
     // A free node beyond an inlet face and its inlet's condition index

@@ -248,7 +248,7 @@ void MpmSystem::stepImpl(Real dt)
             sumHalo(foldMomentum);
             foldGhosts(foldMomentum);
             massToVelocity<K, D>(grid_.velocity);
-            applyFriction(grid_.velocity);
+            applyFriction(grid_.velocity, 0);
             fillGhosts(grid_.velocity);
         }
         { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocity); }
@@ -515,7 +515,7 @@ void MpmSystem::nodalUpdate(Real dt)
         }
     });
     solveMass<K, D>(nodeRhs_, g.velocity, coupled ? &nodeDiag_ : nullptr);
-    applyFriction(g.velocity);
+    applyFriction(g.velocity, dt);
     fillGhosts(g.velocity);
     if (coupling_.active())
     {
@@ -596,21 +596,59 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
     }
 }
 
-void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v) const
+void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v, Real dt)
 {
-    // Coulomb contact on the first node layer (Bardenhagen et al. 2000):
-    // an approaching normal velocity is removed, and the tangential speed is
-    // reduced by mu times that normal velocity change, never reversed.
+    // Coulomb contact of friction walls (Bardenhagen et al. 2000), per image
+    // node and wall: the tangential speed is reduced by mu times the normal
+    // impulse the wall delivers to that node in this step (divided by the
+    // node's mass), never reversed. The wall pushes in two ways: by the
+    // mirror fold (a contact ghost's normal momentum and force enter its
+    // image with the sign reversed instead of added: an impulse
+    // 2 (p_g + dt f_g).n away from the wall, n pointing into it), and on the
+    // first node layer by removing a normal velocity still approaching the
+    // wall. The fold does most of the work, so a bound taken from the second
+    // alone gave a fraction of mu (tests/unit/frictionWallTest.cpp). The
+    // ghosts still hold their own momentum and force after the fold. dt = 0
+    // (the MUSL re-map): the momentum's fold only.
+    const auto& ghosts = boundary_.ghosts();
+    const auto& g = grid_;
+    auto& J = wallImpulse_;
+    for (auto& a : J) a.resize(lattice_.nNodes, 0.0);   // zero between calls
+    for (const Index k : region_.ghosts())
+    {
+        const auto& gh = ghosts[k];
+        if (gh.mu <= 0 || ghostSign_[k][gh.unilateralAxis] > 0) continue;   // no friction, or no contact
+        const int a = gh.unilateralAxis;
+        J[a][gh.image] += 2*(g.momentum[a][gh.ghost] + dt*g.force[a][gh.ghost])*gh.outward;
+    }
+    const Real tol = massTolerance_;
+    // Coulomb on node I against the wall normal to axis a; clears J there,
+    // so a node listed twice (first layer and image) is treated once.
+    auto slide = [&](Index I, int a, Real mu)
+    {
+        const Real Jn = J[a][I];
+        J[a][I] = 0;
+        if (Jn <= 0 || g.mass[I] <= tol) return;
+        Real vt2 = 0;
+        for (int d = 0; d < 3; ++d) if (d != a) vt2 += v[d][I]*v[d][I];
+        const Real vt = std::sqrt(vt2), dv = mu*Jn/g.mass[I];
+        const Real scale = vt > dv ? 1.0 - dv/vt : 0.0;
+        for (int d = 0; d < 3; ++d) if (d != a) v[d][I] *= scale;
+    };
     for (const auto& fn : boundary_.frictionNodes())
     {
         const Real vn = v[fn.axis][fn.node]*fn.outward;
-        if (vn <= 0) continue;
-        Real vt2 = 0;
-        for (int d = 0; d < 3; ++d) if (d != fn.axis) vt2 += v[d][fn.node]*v[d][fn.node];
-        const Real vt = std::sqrt(vt2);
-        const Real scale = vt > 0 ? std::max(0.0, 1.0 - fn.mu*vn/vt) : 0.0;
-        for (int d = 0; d < 3; ++d) if (d != fn.axis) v[d][fn.node] *= scale;
-        v[fn.axis][fn.node] = 0;
+        if (vn > 0)
+        {
+            J[fn.axis][fn.node] += g.mass[fn.node]*vn;
+            v[fn.axis][fn.node] = 0;
+        }
+        slide(fn.node, fn.axis, fn.mu);
+    }
+    for (const Index k : region_.ghosts())
+    {
+        const auto& gh = ghosts[k];
+        if (gh.mu > 0) slide(gh.image, gh.unilateralAxis, gh.mu);
     }
 }
 

@@ -231,7 +231,10 @@ private:
     void addGravity();
     template<class K, int D> void nodalUpdate(Real dt);
     template<class K, int D> void massToVelocity(std::array<std::vector<Real>, 3>& v);
-    void applyFriction(std::array<std::vector<Real>, 3>& v) const;
+    // Coulomb friction of friction walls on the updated velocity, bounded
+    // by the normal impulse of the wall's fold (momentum + dt force of its
+    // contact ghosts) and contact at each node
+    void applyFriction(std::array<std::vector<Real>, 3>& v, Real dt);
     void updateStress(Real dt);
     void movePoints();
 
@@ -269,6 +272,9 @@ private:
     // Reflection signs of each ghost for this step: the boundary's, with
     // the normal sign of unilateral walls released where material leaves.
     std::vector<std::array<Real, 3>> ghostSign_;
+    // Per node and wall axis: the normal impulse of friction walls in this
+    // step (applyFriction; zero between its calls)
+    std::array<std::vector<Real>, 3> wallImpulse_;
 
     // Scratch for the consistent-mass sweeps: per point and per node.
     std::array<std::vector<Real>, 3> pointScratch_;

@@ -70,12 +70,16 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     response_ = readChoice(d, "fluidResponse", parseResponse, responseName, "linearised frozen", fluidResponse::linearised);
     forceNames_ = d.get<wordList>("forces");
     // Each force's own keywords are known only once it is selected
-    wordList known({"mode", "forces", "alphaMax", "subCycles", "fluidResponse"});
+    wordList known({"mode", "forces", "alphaMax", "subCycles", "fluidResponse", "timeStepAdvice"});
     checkSelection(forceNames_, solidForce::names(), d, "force", "forces");
     Info<< "    forces " << forceNames_ << " (others are not computed)" << nl;
     // Below 1: the fluid keeps a share of every cell (alpha.fluid >= 1 -
     // alphaMax divides the pressure equation and the drag)
     alphaMax_ = readBounded(d, "alphaMax", 0.63, numberRange{0, 1, false, false});
+    // Off by default: the analysis costs seconds with hundreds of
+    // sub-cycles (docs/stabilityAnalysis.md section 7b.7)
+    timeStepAdvice_ = d.getOrDefault<bool>("timeStepAdvice", false);
+    Info<< "    timeStepAdvice " << (timeStepAdvice_ ? "yes" : "no") << nl;
     const entry* sc = d.findEntry("subCycles", keyType::LITERAL);
     if (sc && !(sc->stream()[0].isWord() && sc->stream()[0].wordToken() == "auto"))
     {
@@ -114,6 +118,12 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     Info<< endl;
     mpm_.system().mapToGrid();      // alpha.solid from the grain volumes
     updateFluidFraction();
+}
+
+const Foam::solidForce* Foam::fluidCoupling::findForce(const word& name) const
+{
+    const label i = forceNames_.find(name);
+    return i < 0 ? nullptr : &forces_[i];
 }
 
 void Foam::fluidCoupling::setGravity(const vector& g)

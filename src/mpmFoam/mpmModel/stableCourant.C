@@ -3,6 +3,21 @@
 #include <algorithm>
 #include <sstream>
 
+mpm::stability::AnalysisSetup Foam::analysedStep(const mpm::StepOptions& o)
+{
+    namespace st = mpm::stability;
+    st::AnalysisSetup s;
+    s.shape = o.shape;
+    s.alpha = o.flipRatio;
+    s.mass = st::MassKind::lumped;
+    s.scheme =
+        o.stressUpdate == mpm::StressUpdate::USF ? st::StressUpdate::USF
+      : o.stressUpdate == mpm::StressUpdate::MUSL ? st::StressUpdate::MUSL
+      : st::StressUpdate::USL;
+    s.offsets = {0};
+    return s;
+}
+
 Foam::stableCourant Foam::analysedCourantLimit(const mpm::StepOptions& o)
 {
     namespace st = mpm::stability;
@@ -17,16 +32,8 @@ Foam::stableCourant Foam::analysedCourantLimit(const mpm::StepOptions& o)
         result.description = "consistent mass is not analysed";
         return result;
     }
-    st::AnalysisSetup s;
+    st::AnalysisSetup s = analysedStep(o);
     s.model = st::Model::wave;
-    s.shape = o.shape;
-    s.alpha = o.flipRatio;
-    s.mass = st::MassKind::lumped;
-    s.scheme =
-        o.stressUpdate == mpm::StressUpdate::USF ? st::StressUpdate::USF
-      : o.stressUpdate == mpm::StressUpdate::MUSL ? st::StressUpdate::MUSL
-      : st::StressUpdate::USL;
-    s.offsets = {0};
     // The offsets of docs/stabilityAnalysis.md's "limit vs offset" table,
     // (i + 0.5)/20. The kernels are symmetric, so offsets o and 1 - o have
     // the same limit: the first half is enough.

@@ -5,6 +5,7 @@
 #include "mpmControls.H"
 #include "completeTimes.H"
 #include "accuracyFrontLog.H"
+#include "coupledTimeStepAdvice.H"
 #include <cmath>
 
 namespace Foam
@@ -27,6 +28,10 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
         coupling_.reset(new fluidCoupling(mesh, mpm_, fluid_()));
 
         checkStep(runTime, "the fluid step; the grains sub-cycle within it");
+        if (coupling_->timeStepAdvice())
+        {
+            printCoupledTimeStepAdvice(coupling_(), pimple_(), runTime.deltaTValue());
+        }
         const dictionary& cd = runTime.controlDict();
         adjustFluidStep_ = cd.getOrDefault<bool>("adjustTimeStep", false);
         Info<< "Fluid time step: " << (adjustFluidStep_ ? "adjustable" : "fixed")

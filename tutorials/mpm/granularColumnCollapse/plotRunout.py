@@ -2,8 +2,9 @@
 """Runout against aspect ratio for the runs of ./sweepAspectRatio.
 
 For each run directory (sweep/<material>_a<a>_h<h>) measures the runout
-(L_f - a0)/a0 with plotProfile.measure (front of the deposit: the farthest
-point + half a point spacing), prints it with Lube et al.'s (2005)
+(L_f - a0)/a0 with plotProfile.measure (front of the deposit: 99.9 % of
+the mass behind it; the farthest point's runout is printed beside it),
+prints it with Lube et al.'s (2005)
 quasi-2D law
 
     (L_f - a0)/a0 = 1.2 a          a < 2.3
@@ -32,24 +33,26 @@ def lube(a):
 
 
 def run_parameters(run):
-    """(material [with '_E<E>' when the sweep set E], a, h) from the run's name."""
-    m = re.search(r"([A-Za-z0-9]+)_a([0-9.]+)_h([0-9.]+)(_E[-+0-9.e]+)?$", os.path.basename(run.rstrip("/")))
-    return m.group(1) + (m.group(4) or ""), float(m.group(2)), float(m.group(3))
+    """(material [with '_E<E>' when the sweep set E, '_geostatic' when it started geostatic], a, h) from the run's name."""
+    m = re.search(r"([A-Za-z0-9]+)_a([0-9.]+)_h([0-9.]+)(_E[-+0-9.e]+)?(_geostatic)?$",
+                  os.path.basename(run.rstrip("/")))
+    return m.group(1) + (m.group(4) or "") + (m.group(5) or ""), float(m.group(2)), float(m.group(3))
 
 
 def main():
     runs = [r for r in sys.argv[1:] if not r.startswith("--")]
     rows = []
-    print("%-16s %5s %7s %6s %8s %8s %7s %10s %8s" % ("material", "a", "h [m]", "points", "runout",
-          "Lube", "ratio", "maxU end", "t end"))
+    print("%-26s %5s %7s %6s %8s %8s %8s %7s %10s %8s" % ("material", "a", "h [m]", "points", "runout",
+          "farthest", "Lube", "ratio", "maxU end", "t end"))
     for run in runs:
         law, a, h = run_parameters(run)
         m = measure(run)
         runout = (m["Lf"] - m["a0"])/m["a0"]
         s = mpmPost.read_summary(run)
         rows.append((law, a, h, runout))
-        print("%-16s %5g %7g %6d %8.3f %8.3f %7.3f %10.3g %8s" % (law, m["h0"]/m["a0"], h, len(m["x1"]),
-              runout, lube(a), runout/lube(a), s["maxU"][-1], m["times"][-1]))
+        farthest = (m["LfMax"] - m["a0"])/m["a0"]
+        print("%-26s %5g %7g %6d %8.3f %8.3f %8.3f %7.3f %10.3g %8s" % (law, m["h0"]/m["a0"], h, len(m["x1"]),
+              runout, farthest, lube(a), runout/lube(a), s["maxU"][-1], m["times"][-1]))
 
     print("Change of the runout when the cell size halves:")
     for law in sorted({r[0] for r in rows}):

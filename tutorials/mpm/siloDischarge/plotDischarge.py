@@ -20,7 +20,13 @@ squares of log W on log D, and C = W/(rho sqrt(g) D^(3/2)) per width. The
 fluid run: W against sqrt(2 g H), Torricelli's W = Cc rho D sqrt(2 g H).
 
 Writes rate.png and beverloo.png (unless --no-plot) and prints the table.
-Usage: plotDischarge.py [case ...] [--no-plot]
+
+--convergence: the cases are one slot at several cell sizes (Allrun
+convergence); per shape function, C = W/(rho sqrt(g) D^1.5) at each h, its
+change on each cell halving, the observed order p = log2(dC_coarse/dC_fine)
+of the last three and the Richardson value C_f + dC_f/(2^p - 1);
+convergence.png (C against D/h).
+Usage: plotDischarge.py [case ...] [--no-plot] [--convergence]
 """
 import glob
 import os
@@ -92,8 +98,56 @@ def fluid(case):
     return "water" in text
 
 
+def shapeFunction(case):
+    text = re.sub(r"//.*", "", open(os.path.join(case, "constant", "mpmProperties")).read())
+    return re.search(r"^\s*shapeFunction\s+(\w+)\s*;", text, re.M).group(1)
+
+
+def convergence(cases):
+    """C of one slot under refinement, per shape function."""
+    runs = [analyse(c) for c in cases]
+    C = lambda r: r["W"]/(RHO*np.sqrt(G)*r["D"]**1.5)
+    cell = lambda r: r["D"]/slotCells(r["case"])
+    print("rho %g, g %g; steady window t >= 0.4 s while H >= 2 D" % (RHO, G))
+    print("%-16s %6s %7s %5s %9s %7s %9s %8s" % ("shape", "D", "h", "D/h", "W", "C", "halving", "clamped"))
+    curves = {}
+    for shape in sorted(set(shapeFunction(r["case"]) for r in runs)):
+        group = sorted([r for r in runs if shapeFunction(r["case"]) == shape], key=cell, reverse=True)
+        Cs = [C(r) for r in group]
+        for i, r in enumerate(group):
+            change = "%+8.1f%%" % (100*(Cs[i]/Cs[i - 1] - 1)) if i else "%9s" % "-"
+            print("%-16s %6.3f %7.4f %5.0f %9.4g %7.3f %s %8d"
+                  % (shape, r["D"], cell(r), r["D"]/cell(r), r["W"], Cs[i], change, r["clamped"]))
+        if len(Cs) >= 3:
+            d1, d2 = Cs[-2] - Cs[-3], Cs[-1] - Cs[-2]
+            if d1*d2 > 0 and abs(d1) > abs(d2):
+                p = np.log2(d1/d2)
+                print("%-16s observed order p = log2(dC coarse/dC fine) = %.2f; Richardson C = %.3f"
+                      % (shape, p, Cs[-1] + d2/(2**p - 1)))
+            else:
+                print("%-16s not in the asymptotic range (changes %.3f then %.3f)" % (shape, d1, d2))
+        curves[shape] = ([r["D"]/cell(r) for r in group], Cs)
+    print("max |mass balance error|/initial mass over the runs: %.2g" % max(r["balance"] for r in runs))
+    if "--no-plot" in sys.argv:
+        return
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6, 4.4))
+    for shape, (n, Cs) in curves.items():
+        ax.plot(n, Cs, "o-", label=shape)
+    ax.set_xscale("log", base=2)
+    ax.set_xlabel("cells across the slot D/h"); ax.set_ylabel("C = W/(rho sqrt(g) D^1.5)")
+    ax.grid(alpha=0.3, which="both"); ax.legend(fontsize=8)
+    ax.set_title("Discharge constant under refinement (D = %g m)" % runs[0]["D"])
+    fig.tight_layout(); fig.savefig("convergence.png", dpi=120)
+
+
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    if "--convergence" in sys.argv:
+        convergence(args)
+        return
     cases = args or sorted(glob.glob("runs/*"))
     cases = [c for c in cases if os.path.isdir(os.path.join(c, "postProcessing", "openBoundaries"))]
     # The fluid's rate has no plateau to wait for: its window runs to the end
