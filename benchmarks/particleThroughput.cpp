@@ -1,15 +1,21 @@
 // Particle throughput of the MPM step: a 3D elastic block, 32^3 cells,
 // 8 points per cell (262144 points), linear-elastic, gravity, USL, FLIP 0.99.
 // Prints particle-steps/s for LH, QBS and CBS at 1 and 2 OpenMP threads, all
-// in one run so the ratios share the machine's state. Where the build has
-// the cuda back-end and a GPU is present, then prints a cuda row per shape
-// function with its ratio to 1 CPU thread (measured again next to it);
-// otherwise it says why there is none.
+// in one run so the ratios share the machine's state, the stress phase's
+// time per step, and the achieved fraction of the machine's ceilings
+// (ceilings.hpp, measured at the start of the run): bytes and flops per
+// point-step counted as stepCost.hpp says, times the point-step rate, over
+// the triad bandwidth and the FMA peak at the same thread count. Where the
+// build has the cuda back-end and a GPU is present, it then prints a cuda
+// row per shape function with its ratio to 1 CPU thread (measured again
+// next to it); otherwise it says why there is none.
 //
 //   build/benchmarks/particleThroughput [cells=32] [steps=20] [shuffle=0] [reorder=1]
 #include "constitutive/constitutiveLaw.hpp"
 #include "step/mpmSystem.hpp"
+#include "ceilings.hpp"
 #include "machine.hpp"
+#include "stepCost.hpp"
 #include "timedSteps.hpp"
 #include <algorithm>
 #include <random>
@@ -81,9 +87,18 @@ int main(int argc, char** argv)
     if (getloadavg(load, 3) < 0) load[0] = -1;
     std::printf("# machine: %s, load average %.2f (other work skews 2-thread runs most)\n",
                 bench::machine().c_str(), load[0]);
-    std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s\n", "shape", "threads", "points",
-                "ms/step", "Mpoint-step/s", "P2G%", "nodal%", "G2P%", "stress%");
     const int maxThreads = omp_get_num_procs() < 2 ? 1 : 2;
+    double bandwidth[3] = {0, 0, 0}, peak[3] = {0, 0, 0};
+    for (int t = 1; t <= maxThreads; ++t)
+    {
+        bandwidth[t] = bench::triadBandwidth(t);
+        peak[t] = bench::fmaPeak(t);
+        std::printf("# ceilings at %d thread(s): triad %.2f GB/s, FMA peak %.2f GFLOP/s (ceilings.hpp)\n",
+                    t, bandwidth[t], peak[t]);
+    }
+    std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s %10s %9s %9s %7s %7s %7s\n", "shape", "threads",
+                "points", "ms/step", "Mpoint-step/s", "P2G%", "nodal%", "G2P%", "stress%", "stress-ms",
+                "B/pt-step", "fl/pt-step", "GB/s", "%triad", "%peak");
     for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
     for (int threads = 1; threads <= maxThreads; ++threads)
     {
@@ -94,9 +109,13 @@ int main(int argc, char** argv)
         const double sec = r.seconds;
         const StepTimers& t = r.phases;
         const double tot = t.total();
-        std::printf("%-18s %8d %10lld %12.2f %14.3f %10.1f %10.1f %10.1f %10.1f\n", shapeName(shape), threads,
-                    (long long)s.particles().size(), 1e3*sec/steps, s.particles().size()*double(steps)/sec/1e6,
-                    100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot);
+        const double rate = s.particles().size()*double(steps)/sec;     // point-steps/s
+        const bench::StepCost cost = bench::stepCost(shape, s.particles().size(), s.activeNodeCount());
+        std::printf("%-18s %8d %10lld %12.2f %14.3f %10.1f %10.1f %10.1f %10.1f %10.2f %9.0f %9.0f %7.2f %7.1f %7.1f\n",
+                    shapeName(shape), threads, (long long)s.particles().size(), 1e3*sec/steps, rate/1e6,
+                    100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot,
+                    1e3*t.constitutive/steps, cost.bytes, cost.flops, cost.bytes*rate/1e9,
+                    100*cost.bytes*rate/1e9/bandwidth[threads], 100*cost.flops*rate/1e9/peak[threads]);
     }
     // The cuda back-end (docs/gpu.md): the point work on the GPU, the node
     // work and the transfers' packing on 1 CPU thread
