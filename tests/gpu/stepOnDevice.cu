@@ -3,7 +3,7 @@
 //
 //  * a 3D linear-elastic block thrown at the floor of a no-slip box under
 //    gravity, for every shape function (LH, QBS, CBS), transfer (FLIP 0.99,
-//    APIC) and stress update (USL, MUSL);
+//    APIC) and stress update (USF, USL, MUSL);
 //  * a Drucker-Prager granular column collapsing in a box of slip walls
 //    with a Coulomb-friction floor (QBS and CBS, FLIP, USL).
 //
@@ -172,7 +172,7 @@ int main()
     std::vector<Case> cases;
     for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
     for (auto transfer : {Transfer::picFlip, Transfer::apic})
-    for (auto update : {StressUpdate::USL, StressUpdate::MUSL})
+    for (auto update : {StressUpdate::USF, StressUpdate::USL, StressUpdate::MUSL})
     {
         Case c;
         c.options.shape = shape;

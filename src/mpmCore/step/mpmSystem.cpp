@@ -908,7 +908,7 @@ void MpmSystem::stepOnDevice(Real dt)
             sumHalo(foldMomentum);
             foldGhosts(foldMomentum);
             massToVelocity<K, D>(grid_.velocity);
-            applyFriction(grid_.velocity);
+            applyFriction(grid_.velocity, 0);
             fillGhosts(grid_.velocity);
         }
         {
