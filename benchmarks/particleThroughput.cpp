@@ -1,12 +1,18 @@
 // Particle throughput of the MPM step: a 3D elastic block, 32^3 cells,
 // 8 points per cell (262144 points), linear-elastic, gravity, USL, FLIP 0.99.
 // Prints particle-steps/s for LH, QBS and CBS at 1 and 2 OpenMP threads, all
-// in one run so the ratios share the machine's state.
+// in one run so the ratios share the machine's state, the stress phase's
+// time per step, and the achieved fraction of the machine's ceilings
+// (ceilings.hpp, measured at the start of the run): bytes and flops per
+// point-step counted as stepCost.hpp says, times the point-step rate, over
+// the triad bandwidth and the FMA peak at the same thread count.
 //
 //   build/benchmarks/particleThroughput [cells=32] [steps=20] [shuffle=0] [reorder=1]
 #include "constitutive/constitutiveLaw.hpp"
 #include "step/mpmSystem.hpp"
+#include "ceilings.hpp"
 #include "machine.hpp"
+#include "stepCost.hpp"
 #include "timedSteps.hpp"
 #include <algorithm>
 #include <random>
@@ -79,9 +85,18 @@ int main(int argc, char** argv)
                 bench::machine().c_str(), load[0]);
     // cpu: point-steps per CPU second of one thread (1 thread: the CPU time,
     // the figure that survives a shared machine; 2: the CPU time / 2)
-    std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s %10s\n", "shape", "threads", "points",
-                "ms/step", "Mpoint-step/s", "cpu Mpt-s/s", "P2G%", "nodal%", "G2P%", "stress%");
     const int maxThreads = omp_get_num_procs() < 2 ? 1 : 2;
+    double bandwidth[3] = {0, 0, 0}, peak[3] = {0, 0, 0};
+    for (int t = 1; t <= maxThreads; ++t)
+    {
+        bandwidth[t] = bench::triadBandwidth(t);
+        peak[t] = bench::fmaPeak(t);
+        std::printf("# ceilings at %d thread(s): triad %.2f GB/s, FMA peak %.2f GFLOP/s (ceilings.hpp)\n",
+                    t, bandwidth[t], peak[t]);
+    }
+    std::printf("%-18s %8s %10s %12s %14s %11s %10s %10s %10s %10s %10s %9s %9s %7s %7s %7s\n", "shape", "threads",
+                "points", "ms/step", "Mpoint-step/s", "cpu Mpt-s/s", "P2G%", "nodal%", "G2P%", "stress%", "stress-ms",
+                "B/pt-step", "fl/pt-step", "GB/s", "%triad", "%peak");
     for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
     for (int threads = 1; threads <= maxThreads; ++threads)
     {
@@ -92,10 +107,14 @@ int main(int argc, char** argv)
         const double sec = r.seconds;
         const StepTimers& t = r.phases;
         const double tot = t.total();
-        std::printf("%-18s %8d %10lld %12.2f %14.3f %10.3f %10.1f %10.1f %10.1f %10.1f\n", shapeName(shape), threads,
-                    (long long)s.particles().size(), 1e3*sec/steps, s.particles().size()*double(steps)/sec/1e6,
+        const double rate = s.particles().size()*double(steps)/sec;     // point-steps/s
+        const bench::StepCost cost = bench::stepCost(shape, s.particles().size(), s.activeNodeCount());
+        std::printf("%-18s %8d %10lld %12.2f %14.3f %11.3f %10.1f %10.1f %10.1f %10.1f %10.2f %9.0f %9.0f %7.2f %7.1f %7.1f\n",
+                    shapeName(shape), threads, (long long)s.particles().size(), 1e3*sec/steps, rate/1e6,
                     s.particles().size()*double(steps)/(r.cpuSeconds/threads)/1e6,
-                    100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot);
+                    100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot,
+                    1e3*t.constitutive/steps, cost.bytes, cost.flops, cost.bytes*rate/1e9,
+                    100*cost.bytes*rate/1e9/bandwidth[threads], 100*cost.flops*rate/1e9/peak[threads]);
     }
     return 0;
 }

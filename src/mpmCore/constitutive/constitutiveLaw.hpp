@@ -2,11 +2,16 @@
 //
 // The step computes, for each material point, the velocity gradient L over
 // the step and the updated deformation gradient F_new = (I + dt L) F_old,
-// then calls updateStress() once per point. A virtual call per point costs a
-// few ns, negligible against the 8..64-node stencil loops, and keeps each law
-// a small self-contained class.
+// then updates the stress. It does so without a virtual call per point: it
+// asks each material once per step for its params() (a LawParams value) and
+// runs the kernel body of lawKernels.hpp, which switches on the law's type
+// and works the same on the host and on a GPU. The class keeps what is not
+// per point (names, wave speed, energy, the registry) and a virtual
+// updateStress() that calls the same kernel, for tests and tools.
 #pragma once
 #include "../common/modelRegistry.hpp"
+#include "lawKernels.hpp"
+#include "pointState.hpp"
 #include "../types.hpp"
 #include <map>
 #include <memory>
@@ -15,25 +20,6 @@
 
 namespace mpm {
 
-// Everything a law may read or change at one material point.
-struct PointKinematics
-{
-    const Real* L;        // velocity gradient, row-major, L_ij = dv_i/dx_j
-    const Real* Fold;     // deformation gradient at the start of the step
-    const Real* Fnew;     // deformation gradient at the end of the step
-    Real dt;
-    // Grain volume fraction of the point's parcel at the end of the step,
-    // mass / (rho0 volume): 1/J for a continuum, the local packing for
-    // grains seeded with a solidFraction < 1.
-    Real solidFraction = 1;
-};
-
-struct PointStress
-{
-    Real* sigma;          // Cauchy stress (xx yy zz xy yz xz), updated in place
-    Real* eqPlasticStrain;// accumulated equivalent plastic strain (history)
-};
-
 class ConstitutiveLaw
 {
 public:
@@ -41,8 +27,12 @@ public:
 
     virtual const char* typeName() const = 0;
 
-    // Stress update for one point over one step.
+    // Stress update for one point over one step (the kernel of params()).
     virtual void updateStress(const PointKinematics& k, PointStress& s) const = 0;
+
+    // The law as a kernel parameter value: its type, its parameters, rho0
+    // and needsDeformation(). Called on the host once per step, not per point.
+    virtual LawParams params() const = 0;
 
     // Largest signal speed (e.g. dilatational wave speed) at reference
     // density rho0 and volume ratio J, for the CFL time step.
@@ -67,6 +57,16 @@ public:
     Real rho0() const { return rho0_; }
 
 protected:
+    // A LawParams of the given type with rho0 and needsDeformation() filled.
+    LawParams baseParams(LawType type) const
+    {
+        LawParams p;
+        p.type = type;
+        p.rho0 = rho0_;
+        p.deforms = needsDeformation();
+        return p;
+    }
+
     Real rho0_ = 1.0;
 };
 

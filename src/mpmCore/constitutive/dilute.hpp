@@ -4,6 +4,7 @@
 // fluid step alone.
 #pragma once
 #include "constitutiveLaw.hpp"
+#include "diluteKernel.hpp"
 
 namespace mpm {
 
@@ -17,10 +18,11 @@ public:
     }
 
     const char* typeName() const override { return "dilute"; }
-    void updateStress(const PointKinematics&, PointStress& s) const override
+    void updateStress(const PointKinematics& k, PointStress& s) const override
     {
-        for (int a = 0; a < 6; ++a) s.sigma[a] = 0;
+        diluteStress(k, s);
     }
+    LawParams params() const override { return baseParams(LawType::dilute); }
     Real waveSpeed(Real) const override { return 0; }
     Real storedEnergy(const Real*, const Real*) const override { return 0; }
     bool needsDeformation() const override { return false; }

@@ -27,6 +27,7 @@
 // cohesionless material). The equivalent plastic strain grows by
 // sqrt(2/3 de_p:de_p) with de_p = C^-1:(sigma_trial - sigma_new).
 #pragma once
+#include "druckerPragerKernel.hpp"
 #include "linearElastic.hpp"
 
 namespace mpm {
@@ -41,6 +42,7 @@ public:
 
     const char* typeName() const override { return "druckerPrager"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override;
+    LawParams params() const override;
     Real waveSpeed(Real J) const override;
 
     // f(sigma) = q - eta p - xi c, in stress units (<= 0 is admissible).
@@ -56,9 +58,7 @@ public:
     static Real planeStrainXi(Real angleDeg);
 
 private:
-    // Projects an elastic trial stress onto the yield surface; returns the
-    // equivalent plastic strain increment (0 if the trial is admissible).
-    Real returnMap(Real* sigma) const;
+    DruckerPragerParams kernelParams() const;
 
     Real cohesion_;
     Real eta_, xi_, etaBar_;

@@ -8,29 +8,14 @@
 //   C:D = lambda tr(D) I + 2 mu D,
 //
 // with D, W the symmetric and skew parts of the velocity gradient L. The
-// elastic trial of the plasticity models reuses jaumannElasticUpdate().
+// elastic trial of the plasticity models reuses jaumannElasticUpdate()
+// (isotropicElasticity.hpp); the per-point update is linearElasticKernel.hpp.
 #pragma once
 #include "constitutiveLaw.hpp"
+#include "isotropicElasticity.hpp"
+#include "linearElasticKernel.hpp"
 
 namespace mpm {
-
-// Lame coefficients of an isotropic elastic solid.
-struct IsotropicElasticity
-{
-    Real lambda;
-    Real mu;        // shear modulus G
-
-    static IsotropicElasticity fromYoungPoisson(Real E, Real nu);
-    Real bulkModulus() const { return lambda + 2.0*mu/3.0; }
-    Real pWaveModulus() const { return lambda + 2.0*mu; }
-
-    // sigma : C^-1 : sigma / 2 per unit current volume.
-    Real complementaryEnergy(const Real* sigma) const;
-};
-
-// Objective (Jaumann-rate) hypoelastic update of sigma (6 components, in
-// place) over one step with velocity gradient L (row-major 3x3).
-void jaumannElasticUpdate(const IsotropicElasticity& el, const Real* L, Real dt, Real* sigma);
 
 // Base of the laws whose elasticity is isotropic, given by rho, E and nu.
 class IsotropicElasticLaw : public ConstitutiveLaw
@@ -57,12 +42,12 @@ public:
 
     const char* typeName() const override { return "linearElastic"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override;
+    LawParams params() const override;
     // Dilatational wave speed sqrt((lambda + 2 mu)/rho0); J is ignored
     // because the hypoelastic tangent does not depend on the deformation.
     Real waveSpeed(Real J) const override;
 
     Real storedEnergy(const Real* sigma, const Real* F) const override;
-
 };
 
 } // namespace mpm

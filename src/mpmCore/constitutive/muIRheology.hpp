@@ -33,6 +33,7 @@
 //     sqrt(2/3 de_p:de_p) measure of DruckerPrager.
 #pragma once
 #include "linearElastic.hpp"
+#include "muIRheologyKernel.hpp"
 
 namespace mpm {
 
@@ -46,6 +47,7 @@ public:
 
     const char* typeName() const override { return "muIRheology"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override;
+    LawParams params() const override;
     Real waveSpeed(Real J) const override;
     Real storedEnergy(const Real* sigma, const Real* F) const override;
 
@@ -60,9 +62,10 @@ public:
     Real grainDensity() const { return rhoS_; }
 
 private:
-    // Projects an elastic trial stress (p > 0) onto tau = mu(I) p over a
-    // step dt; returns the equivalent plastic strain increment.
-    Real returnToFlowSurface(Real* sigma, Real dt) const;
+    MuIRheologyParams kernelParams() const
+    {
+        return {el_, rho0_, muS_, mu2_, I0_, d_, rhoS_, alphaCritical_};
+    }
 
     Real muS_, mu2_, I0_, d_, rhoS_, alphaCritical_;
 };

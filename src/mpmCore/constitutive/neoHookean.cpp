@@ -15,15 +15,16 @@ std::unique_ptr<ConstitutiveLaw> NeoHookean::create(const Coefficients& c)
     return std::make_unique<NeoHookean>(c.at("rho"), c.at("E"), c.at("nu"));
 }
 
+LawParams NeoHookean::params() const
+{
+    LawParams p = baseParams(LawType::neoHookean);
+    p.neoHookean = {el_};
+    return p;
+}
+
 void NeoHookean::updateStress(const PointKinematics& k, PointStress& s) const
 {
-    using namespace tensor;
-    const Real J = det(k.Fnew);
-    const Sym6 B = selfOuterT(k.Fnew);
-    const Real muOverJ = el_.mu/J;
-    const Real volumetric = el_.lambda*std::log(J)/J;
-    for (int a = 0; a < 6; ++a) s.sigma[a] = muOverJ*B[a];
-    for (int a = 0; a < 3; ++a) s.sigma[a] += volumetric - muOverJ;
+    neoHookeanStress({el_}, k, s);
 }
 
 Real NeoHookean::waveSpeed(Real J) const

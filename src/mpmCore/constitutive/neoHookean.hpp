@@ -8,6 +8,7 @@
 // point (J <= 0) gives a non-finite stress, which the step's checks catch.
 #pragma once
 #include "linearElastic.hpp"
+#include "neoHookeanKernel.hpp"
 
 namespace mpm {
 
@@ -19,6 +20,7 @@ public:
 
     const char* typeName() const override { return "neoHookean"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override;
+    LawParams params() const override;
 
     // Longitudinal speed from the spatial tangent moduli at volume ratio J:
     // c^2 = (lambda + 2(mu - lambda ln J))/rho0 (the 1/J of the tangent
@@ -28,7 +30,6 @@ public:
 
     // W = mu/2 (tr(F F^T) - 3) - mu ln J + lambda/2 (ln J)^2
     Real storedEnergy(const Real* sigma, const Real* F) const override;
-
 };
 
 } // namespace mpm

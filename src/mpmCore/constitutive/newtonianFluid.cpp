@@ -19,17 +19,19 @@ std::unique_ptr<ConstitutiveLaw> NewtonianFluid::create(const Coefficients& c)
 
 Real NewtonianFluid::pressure(Real J) const
 {
-    return K_*(std::pow(J, -gamma_) - 1.0);
+    return newtonianFluidPressure(kernelParams(), J);
+}
+
+LawParams NewtonianFluid::params() const
+{
+    LawParams p = baseParams(LawType::newtonianFluid);
+    p.newtonianFluid = kernelParams();
+    return p;
 }
 
 void NewtonianFluid::updateStress(const PointKinematics& k, PointStress& s) const
 {
-    using namespace tensor;
-    Sym6 devD = symPart(k.L);
-    makeDeviatoric(devD.data());
-    const Real p = pressure(det(k.Fnew));
-    for (int a = 0; a < 6; ++a) s.sigma[a] = 2.0*mu_*devD[a];
-    for (int a = 0; a < 3; ++a) s.sigma[a] -= p;
+    newtonianFluidStress(kernelParams(), k, s);
 }
 
 Real NewtonianFluid::waveSpeed(Real J) const

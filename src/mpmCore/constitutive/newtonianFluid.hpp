@@ -9,6 +9,7 @@
 // Tension (J > 1, p < 0) is not clipped.
 #pragma once
 #include "constitutiveLaw.hpp"
+#include "newtonianFluidKernel.hpp"
 
 namespace mpm {
 
@@ -20,6 +21,7 @@ public:
 
     const char* typeName() const override { return "newtonianFluid"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override;
+    LawParams params() const override;
 
     Real pressure(Real J) const;
 
@@ -38,6 +40,8 @@ public:
     Real storedEnergy(const Real* sigma, const Real* F) const override;
 
 private:
+    NewtonianFluidParams kernelParams() const { return {K_, gamma_, mu_}; }
+
     Real K_, gamma_, mu_;
 };
 

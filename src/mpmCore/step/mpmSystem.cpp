@@ -4,6 +4,8 @@
 #include "../kernels/movePoint.hpp"
 #include "../kernels/nodal.hpp"
 #include "../kernels/p2g.hpp"
+#include "../kernels/stressPoint.hpp"
+#include "../kernels/views.hpp"
 #include "../transfer/stencil.hpp"
 #include <algorithm>
 #include <cmath>
@@ -678,43 +680,20 @@ void MpmSystem::updateStress(Real dt)
 {
     auto& P = particles_;
     const Index n = P.size();
+    // The laws as kernel parameters, once per step (no virtual call per point)
+    std::vector<LawParams> laws(materials_.size());
+    for (std::size_t m = 0; m < materials_.size(); ++m) laws[m] = materials_[m]->params();
+    const LawParams* table = laws.data();
+    const PointView view = pointView(P, L_, dx_);
     Index firstBad = n;
-    // Per material, not per point: a law without deformation (dilute
-    // grains) keeps F = I
-    std::vector<char> deforms(materials_.size());
-    for (std::size_t m = 0; m < materials_.size(); ++m) deforms[m] = materials_[m]->needsDeformation();
     Index nInverted = 0;
     std::int64_t firstInverted = std::numeric_limits<std::int64_t>::max();
     #pragma omp parallel for schedule(static) reduction(min:firstBad, firstInverted) reduction(+:nInverted) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
-        const ConstitutiveLaw& law = *materials_[P.material[p]];
-        const bool deform = deforms[P.material[p]];
-        Real Lp[9], Fo[9], Fn[9], sig[6];
-        for (int e = 0; e < 9; ++e) { Lp[e] = deform ? L_[e][p] : 0.0; Fo[e] = P.F[e][p]; }
-        // F_{n+1} = (I + dt L) F_n
-        for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-        {
-            Real s = Fo[3*i + j];
-            for (int k = 0; k < 3; ++k) s += dt*Lp[3*i + k]*Fo[3*k + j];
-            Fn[3*i + j] = s;
-        }
-        for (int c = 0; c < 6; ++c) sig[c] = P.sigma[c][p];
-        Real ep = P.eqPlasticStrain[p];
-        const Real Jn = tensor::det(Fn);
-        PointKinematics k{Lp, Fo, Fn, dt, P.mass[p]/(law.rho0()*P.volume0[p]*Jn)};
-        PointStress st{sig, &ep};
-        law.updateStress(k, st);
-        bool finite = std::isfinite(ep);
-        for (int c = 0; c < 6; ++c) finite = finite && std::isfinite(sig[c]);
-        for (int e = 0; e < 9; ++e) finite = finite && std::isfinite(Fn[e]);
-        if (!finite) { firstBad = std::min(firstBad, p); continue; }
-        for (int e = 0; e < 9; ++e) P.F[e][p] = Fn[e];
-        for (int c = 0; c < 6; ++c) P.sigma[c][p] = sig[c];
-        P.eqPlasticStrain[p] = ep;
-        P.volume[p] = P.volume0[p]*Jn;
-        if (Jn <= 0 || P.volume[p] <= 0)
+        const StressPointStatus status = stressPoint(view, table, dt, p);
+        if (status == StressPointStatus::bad) firstBad = std::min(firstBad, p);
+        else if (status == StressPointStatus::inverted)
         {
             ++nInverted;
             firstInverted = std::min<std::int64_t>(firstInverted, P.id[p]);
