@@ -87,6 +87,8 @@ int main(int argc, char** argv)
     if (getloadavg(load, 3) < 0) load[0] = -1;
     std::printf("# machine: %s, load average %.2f (other work skews 2-thread runs most)\n",
                 bench::machine().c_str(), load[0]);
+    // cpu: point-steps per CPU second of one thread (1 thread: the CPU time,
+    // the figure that survives a shared machine; 2: the CPU time / 2)
     const int maxThreads = omp_get_num_procs() < 2 ? 1 : 2;
     double bandwidth[3] = {0, 0, 0}, peak[3] = {0, 0, 0};
     for (int t = 1; t <= maxThreads; ++t)
@@ -96,8 +98,8 @@ int main(int argc, char** argv)
         std::printf("# ceilings at %d thread(s): triad %.2f GB/s, FMA peak %.2f GFLOP/s (ceilings.hpp)\n",
                     t, bandwidth[t], peak[t]);
     }
-    std::printf("%-18s %8s %10s %12s %14s %10s %10s %10s %10s %10s %9s %9s %7s %7s %7s\n", "shape", "threads",
-                "points", "ms/step", "Mpoint-step/s", "P2G%", "nodal%", "G2P%", "stress%", "stress-ms",
+    std::printf("%-18s %8s %10s %12s %14s %11s %10s %10s %10s %10s %10s %9s %9s %7s %7s %7s\n", "shape", "threads",
+                "points", "ms/step", "Mpoint-step/s", "cpu Mpt-s/s", "P2G%", "nodal%", "G2P%", "stress%", "stress-ms",
                 "B/pt-step", "fl/pt-step", "GB/s", "%triad", "%peak");
     for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
     for (int threads = 1; threads <= maxThreads; ++threads)
@@ -111,8 +113,9 @@ int main(int argc, char** argv)
         const double tot = t.total();
         const double rate = s.particles().size()*double(steps)/sec;     // point-steps/s
         const bench::StepCost cost = bench::stepCost(shape, s.particles().size(), s.activeNodeCount());
-        std::printf("%-18s %8d %10lld %12.2f %14.3f %10.1f %10.1f %10.1f %10.1f %10.2f %9.0f %9.0f %7.2f %7.1f %7.1f\n",
+        std::printf("%-18s %8d %10lld %12.2f %14.3f %11.3f %10.1f %10.1f %10.1f %10.1f %10.2f %9.0f %9.0f %7.2f %7.1f %7.1f\n",
                     shapeName(shape), threads, (long long)s.particles().size(), 1e3*sec/steps, rate/1e6,
+                    s.particles().size()*double(steps)/(r.cpuSeconds/threads)/1e6,
                     100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot,
                     1e3*t.constitutive/steps, cost.bytes, cost.flops, cost.bytes*rate/1e9,
                     100*cost.bytes*rate/1e9/bandwidth[threads], 100*cost.flops*rate/1e9/peak[threads]);

@@ -58,8 +58,8 @@ int main(int argc, char** argv)
     omp_set_num_threads(1);
     std::printf("# sparseDomain: one elastic ball (QBS, 8 points/cell) in growing empty boxes, %d steps, 1 thread\n", steps);
     std::printf("# machine: %s\n", bench::machine().c_str());
-    std::printf("%-6s %-12s %8s %8s %12s %10s %12s %10s %10s\n", "grid", "box (cells)", "volume", "points",
-                "ms/step", "vs 1x", "active nodes", "nodal%", "Mpt-st/s");
+    std::printf("%-6s %-12s %8s %8s %12s %10s %12s %10s %10s %12s\n", "grid", "box (cells)", "volume", "points",
+                "ms/step", "vs 1x", "active nodes", "nodal%", "Mpt-st/s", "cpu Mpt-st/s");
     const int boxes[5][3] = {{20, 20, 20}, {40, 20, 20}, {40, 20, 40}, {40, 40, 40}, {80, 20, 80}};
     for (bool sparse : {true, false})
     {
@@ -73,10 +73,11 @@ int main(int argc, char** argv)
             if (base == 0) base = ms;
             char name[32];
             std::snprintf(name, sizeof name, "%dx%dx%d", bx[0], bx[1], bx[2]);
-            std::printf("%-6s %-12s %7dx %8lld %12.3f %10.2f %12lld %10.1f %10.2f\n", sparse ? "sparse" : "dense", name,
+            std::printf("%-6s %-12s %7dx %8lld %12.3f %10.2f %12lld %10.1f %10.2f %12.2f\n", sparse ? "sparse" : "dense", name,
                         bx[0]*bx[1]*bx[2]/8000, (long long)s.particles().size(), ms, ms/base,
                         (long long)s.activeNodeCount(), 100*r.phases.nodal/r.phases.total(),
-                        s.particles().size()*double(steps)/sec/1e6);
+                        s.particles().size()*double(steps)/sec/1e6,
+                        s.particles().size()*double(steps)/r.cpuSeconds/1e6);
         }
     }
     return 0;

@@ -8,3 +8,13 @@
 #else
 #define MPM_HOST_DEVICE
 #endif
+
+// Before a loop over the nodes of a stencil row whose iterations are
+// independent: vectorise it on the CPU (OpenMP's simd, no reassociation, so
+// the same bits); nothing on the GPU, where a thread is one point.
+#if defined(__CUDA_ARCH__) || !defined(_OPENMP)
+#define MPM_SIMD
+#else
+#define MPM_SIMD _Pragma("omp simd")
+#endif
+

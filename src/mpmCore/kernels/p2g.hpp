@@ -30,6 +30,49 @@ MPM_HOST_DEVICE inline void p2gPoint
     if constexpr (Apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
     const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
     const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
+    if constexpr (D == 3 && !Apic)
+    {
+        // 3D without the APIC offsets: one loop over each row of W nodes
+        // along x, contiguous in memory (Lattice: axes (0, 1, 2), stride[0]
+        // = 1), as a vector loop over the row computed from the stencil's
+        // x weights Each node receives the same terms, by
+        // the same expressions, in the same order as in forEach's loop.
+        const Index s1 = L.stride[1], s2 = L.stride[2];
+        for (int k = 0; k < K::width; ++k)
+        for (int j = 0; j < K::width; ++j)
+        {
+            const Real wjk = s.w[1][j]*s.w[2][k];
+            const Real djk = s.dw[1][j]*s.w[2][k];
+            const Real wdk = s.w[1][j]*s.dw[2][k];
+            const Index first = s.base[0] + (s.base[1] + j)*s1 + (s.base[2] + k)*s2;
+            MPM_SIMD
+            for (int i = 0; i < K::width; ++i)
+            {
+                const Index I = first + i;
+                const Real N = s.w[0][i]*wjk;
+                if constexpr (MassMomentum)
+                {
+                    add(g.mass, I, N*m);
+                    add(g.volume, I, N*solidVol);
+                }
+                if constexpr (Momentum)
+                {
+                    const Real Nm = N*m;
+                    add(g.momentum[0], I, Nm*v0);
+                    add(g.momentum[1], I, Nm*v1);
+                    add(g.momentum[2], I, Nm*v2);
+                }
+                if constexpr (Force)
+                {
+                    const Real dN0 = s.dw[0][i]*wjk, dN1 = s.w[0][i]*djk, dN2 = s.w[0][i]*wdk;
+                    add(g.force[0], I, -vol*(sxx*dN0 + sxy*dN1 + sxz*dN2));
+                    add(g.force[1], I, -vol*(sxy*dN0 + syy*dN1 + syz*dN2));
+                    add(g.force[2], I, -vol*(sxz*dN0 + syz*dN1 + szz*dN2));
+                }
+            }
+        }
+        return;
+    }
     s.forEach(L, [&](Index I, Real N, const Real* dN, const Real* dx)
     {
         if constexpr (MassMomentum)
