@@ -24,6 +24,7 @@
 // plastic correction) changes the stress by dt|L| ~ 1e-3 of the scale.
 //
 // Exit codes: 0 pass, 1 fail, 77 no usable GPU (ctest reports it skipped).
+#include "gpuTest.cuh"
 #include "constitutive/constitutiveLaw.hpp"
 #include "kernels/stressPoint.hpp"
 #include <cmath>
@@ -288,15 +289,7 @@ int testStressPoint(const std::vector<NamedLaw>& named, LawParams* dLaws)
 
 int main()
 {
-    int devices = 0;
-    if (cudaGetDeviceCount(&devices) != cudaSuccess || devices == 0)
-    {
-        std::printf("SKIP: no usable CUDA device (%s)\n", cudaGetErrorString(cudaGetLastError()));
-        return 77;
-    }
-    cudaDeviceProp prop;
-    cudaGetDeviceProperties(&prop, 0);
-    std::printf("device: %s, compute capability %d.%d\n", prop.name, prop.major, prop.minor);
+    if (!gpuPresent()) return 77;
 
     const std::vector<NamedLaw> named = makeTestLaws();
     std::vector<LawParams> laws;

@@ -7,6 +7,7 @@
 // relative (fused multiply-add differs between the compilers).
 //
 // Exit codes: 0 pass, 1 fail, 77 no usable GPU (ctest reports it skipped).
+#include "gpuTest.cuh"
 #include "transfer/stencil.hpp"
 #include <cmath>
 #include <cstdio>
@@ -87,15 +88,7 @@ int run(const char* name, const Lattice& L, const std::vector<Real>& x)
 
 int main()
 {
-    int devices = 0;
-    if (cudaGetDeviceCount(&devices) != cudaSuccess || devices == 0)
-    {
-        std::printf("SKIP: no usable CUDA device (%s)\n", cudaGetErrorString(cudaGetLastError()));
-        return 77;
-    }
-    cudaDeviceProp prop;
-    cudaGetDeviceProperties(&prop, 0);
-    std::printf("device: %s, compute capability %d.%d\n", prop.name, prop.major, prop.minor);
+    if (!gpuPresent()) return 77;
 
     Lattice L;
     L.h = 0.05;

@@ -766,23 +766,29 @@ void MpmSystem::movePoints()
         const int flags = advancePoint(L, periodic, frozen, P, p, x);
         if (flags & moveBad) { firstBad = std::min(firstBad, p); continue; }
         if (frozen) continue;
-        if (flags & moveOutside)
-        {
-            bool beyondWall = false;
-            const int through = exitCondition(x, beyondWall);
-            if (through >= 0)
-            {
-                leaving_[p] = through;
-                ++leaving;
-                continue;
-            }
-            clamped += beyondWall;
-        }
+        if ((flags & moveOutside) && leavesThroughFace(p, x, leaving, clamped)) continue;
         storePosition(L, periodic, P, p, x);
     }
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
     removeLeaving(leaving);
+}
+
+// A point whose new position x lies beyond a face: marked as leaving
+// through an open face (true), or counted as clamped at a wall (false; the
+// caller then stores it just inside). The host and device moves share it.
+bool MpmSystem::leavesThroughFace(Index p, const Real x[3], Index& leaving, Index& clamped)
+{
+    bool beyondWall = false;
+    const int through = exitCondition(x, beyondWall);
+    if (through >= 0)
+    {
+        leaving_[p] = through;
+        ++leaving;
+        return true;
+    }
+    clamped += beyondWall;
+    return false;
 }
 
 // Which faces the new position x lies beyond: an open one lets the point
@@ -960,15 +966,7 @@ void MpmSystem::movePointsOnDevice(bool apic)
         if (frozen || !(flags & moveOutside)) continue;
         // The device left the unclamped new position
         const Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
-        bool beyondWall = false;
-        const int through = exitCondition(x, beyondWall);
-        if (through >= 0)
-        {
-            leaving_[p] = through;
-            ++leaving;
-            continue;
-        }
-        clamped += beyondWall;
+        if (leavesThroughFace(p, x, leaving, clamped)) continue;
         storePosition(domain_, periodic, P, p, x);
     }
     stopIfNonFinite(firstBad, "velocity");

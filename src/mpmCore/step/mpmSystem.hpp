@@ -185,6 +185,8 @@ private:
     // The open condition through which a point beyond a face at x leaves,
     // or -1 when walls hold it (beyondWall: it lies past one)
     int exitCondition(const Real x[3], bool& beyondWall) const;
+    // Marks a point beyond a face as leaving (true) or counts it clamped
+    bool leavesThroughFace(Index p, const Real x[3], Index& leaving, Index& clamped);
     // Removes the `leaving` points marked in leaving_, counted per condition
     void removeLeaving(Index leaving);
     // inverted_ for its count: the inverted point of lowest id
