@@ -35,8 +35,11 @@ MPM_HOST_DEVICE inline void p2gPoint
         // 3D without the APIC offsets: one loop over each row of W nodes
         // along x, contiguous in memory (Lattice: axes (0, 1, 2), stride[0]
         // = 1), as a vector loop over the row computed from the stencil's
-        // x weights Each node receives the same terms, by
+        // x weights. Each node receives the same terms, by
         // the same expressions, in the same order as in forEach's loop.
+        // Measured trade-off (benchmarks/mppicComparison/README.md): P2G
+        // of the 32^3 block 2x faster with cubic B-splines, but 1.4x
+        // slower on the coupled mppicComparison scene's small grid.
         const Index s1 = L.stride[1], s2 = L.stride[2];
         for (int k = 0; k < K::width; ++k)
         for (int j = 0; j < K::width; ++j)
