@@ -213,13 +213,7 @@ void MpmSystem::stepImpl(Real dt)
     }
     {
         ScopedTimer t(timers_.nodal);
-        addGravity();
-        sumHalo(foldMass | foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
-        foldGhosts(foldMass);
-        decideWallContact(dt, order != StressUpdate::USF);
-        foldGhosts(foldMomentum | (order != StressUpdate::USF ? foldForce : 0u));
-        massToVelocity<K, D>(grid_.velocityOld);
-        fillGhosts(grid_.velocityOld);
+        nodalAfterScatter<K, D>(dt, order != StressUpdate::USF);
     }
     if (order == StressUpdate::USF)
     {
@@ -243,14 +237,7 @@ void MpmSystem::stepImpl(Real dt)
             ScopedTimer t(timers_.p2g);
             scatter<K, D>(false, false, true);
         }
-        {
-            ScopedTimer t(timers_.nodal);
-            sumHalo(foldMomentum);
-            foldGhosts(foldMomentum);
-            massToVelocity<K, D>(grid_.velocity);
-            applyFriction(grid_.velocity, 0);
-            fillGhosts(grid_.velocity);
-        }
+        { ScopedTimer t(timers_.nodal); nodalAfterRemap<K, D>(); }
         { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocity); }
     }
     if (order != StressUpdate::USF)
@@ -262,6 +249,34 @@ void MpmSystem::stepImpl(Real dt)
         ScopedTimer t(timers_.g2p);
         movePoints();
     }
+}
+
+// The node work after the step's fresh P2G (host and device steps alike):
+// gravity, the halo sums, the ghost folds with the wall-contact decision,
+// and the old velocity v^n with its ghosts. withForce: the P2G scattered
+// the internal force too (USL, MUSL), so it is summed and folded here.
+template<class K, int D>
+void MpmSystem::nodalAfterScatter(Real dt, bool withForce)
+{
+    addGravity();
+    sumHalo(foldMass | foldMomentum | (withForce ? foldForce : 0u));
+    foldGhosts(foldMass);
+    decideWallContact(dt, withForce);
+    foldGhosts(foldMomentum | (withForce ? foldForce : 0u));
+    massToVelocity<K, D>(grid_.velocityOld);
+    fillGhosts(grid_.velocityOld);
+}
+
+// The node work of the MUSL re-map: the re-scattered momentum summed and
+// folded, the velocity it gives (walls and friction, no force: dt = 0).
+template<class K, int D>
+void MpmSystem::nodalAfterRemap()
+{
+    sumHalo(foldMomentum);
+    foldGhosts(foldMomentum);
+    massToVelocity<K, D>(grid_.velocity);
+    applyFriction(grid_.velocity, 0);
+    fillGhosts(grid_.velocity);
 }
 
 // P2G. massMomentum: mass, volume and momentum; force: internal force;
@@ -866,13 +881,7 @@ void MpmSystem::stepOnDevice(Real dt)
     }
     {
         ScopedTimer t(timers_.nodal);
-        addGravity();
-        sumHalo(foldMass | foldMomentum | (usf ? 0u : foldForce));
-        foldGhosts(foldMass);
-        decideWallContact(dt, !usf);
-        foldGhosts(foldMomentum | (usf ? 0u : foldForce));
-        massToVelocity<K, D>(grid_.velocityOld);
-        fillGhosts(grid_.velocityOld);
+        nodalAfterScatter<K, D>(dt, !usf);
     }
     if (usf)
     {
@@ -909,14 +918,7 @@ void MpmSystem::stepOnDevice(Real dt)
             dev.p2g(lattice_, shape, false, false, apic, invRho0, grainVolume);
             dev.gridToHost(gridView(grid_), DeviceStep::gridMomentum);
         }
-        {
-            ScopedTimer t(timers_.nodal);
-            sumHalo(foldMomentum);
-            foldGhosts(foldMomentum);
-            massToVelocity<K, D>(grid_.velocity);
-            applyFriction(grid_.velocity, 0);
-            fillGhosts(grid_.velocity);
-        }
+        { ScopedTimer t(timers_.nodal); nodalAfterRemap<K, D>(); }
         {
             ScopedTimer t(timers_.g2p);
             dev.gridFromHost(gridView(grid_), DeviceStep::gridVelocity);

@@ -232,6 +232,10 @@ private:
     // m g on every node, from the P2G masses (before the halo sum and fold)
     void addGravity();
     template<class K, int D> void nodalUpdate(Real dt);
+    // The node work after the fresh P2G, and after the MUSL re-map (shared
+    // by the host and device steps)
+    template<class K, int D> void nodalAfterScatter(Real dt, bool withForce);
+    template<class K, int D> void nodalAfterRemap();
     template<class K, int D> void massToVelocity(std::array<std::vector<Real>, 3>& v);
     // Coulomb friction of friction walls on the updated velocity, bounded
     // by the normal impulse of the wall's fold (momentum + dt force of its
