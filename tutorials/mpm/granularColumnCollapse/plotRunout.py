@@ -33,10 +33,12 @@ def lube(a):
 
 
 def run_parameters(run):
-    """(material [with '_E<E>' when the sweep set E, '_geostatic' when it started geostatic], a, h) from the run's name."""
-    m = re.search(r"([A-Za-z0-9]+)_a([0-9.]+)_h([0-9.]+)(_E[-+0-9.e]+)?(_geostatic)?$",
+    """(material [with '_E<E>' when the sweep set E, '_geostatic' when it started geostatic,
+    '_PIC' or '_FLIP' for another transfer than APIC], a, h) from the run's name."""
+    m = re.search(r"([A-Za-z0-9]+)_a([0-9.]+)_h([0-9.]+)(_E[-+0-9.e]+)?(_geostatic)?(_PIC|_FLIP)?$",
                   os.path.basename(run.rstrip("/")))
-    return m.group(1) + (m.group(4) or "") + (m.group(5) or ""), float(m.group(2)), float(m.group(3))
+    return (m.group(1) + (m.group(4) or "") + (m.group(5) or "") + (m.group(6) or ""),
+            float(m.group(2)), float(m.group(3)))
 
 
 def main():

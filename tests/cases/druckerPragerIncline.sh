@@ -1,0 +1,87 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Verification: the Drucker-Prager sand on a rough incline holds below, and
+# flows above, the friction it mobilises in simple shear, for a thin and a
+# thick layer alike (the floor and the wall treatment do not depend on how
+# many cells the layer has).
+#
+# Reference (docs/druckerPrager.md): with the plane-strain match and no
+# dilatancy, steady simple shear is coaxial, the deviatoric normal stresses
+# vanish, and the yield condition sqrt(J2) = eta p reads tau/sigma_n = eta
+# on the planes parallel to the slope. For phi = 30 deg,
+# eta = 3 tan(phi)/sqrt(9 + 12 tan^2(phi)) = 0.48038, so a layer on a noSlip
+# (rough) base yields at theta* = atan(eta) = 25.66 deg; above it a
+# rate-independent layer accelerates, at most as a rigid block sliding on a
+# plane of friction eta, g (sin(theta) - eta cos(theta)).
+#
+# Case: tutorial mpm/inclinedPlaneFlow with its material replaced by the
+# sand of granularColumnCollapse (druckerPrager, phi 30, psi 0, E 2e6), a
+# layer H = 4 cm of 4 and of 16 cells, x periodic, noSlip floor, t = 0..0.5 s.
+#  1. theta = 25 deg (tan = 0.466 < eta): the mean velocity along the slope
+#     stays below 1e-3 m/s at every write (measured ~1e-5);
+#  2. theta = 26.5 deg (tan = 0.499 > eta): it accelerates; the mean
+#     acceleration over t = 0.1..0.5 s is within [0.5, 1] of the rigid
+#     block's 0.160 m/s^2 (measured 0.71 at 4 cells, 0.78 at 16);
+#  3. the 4-cell and the 16-cell layers' accelerations agree within 25 %.
+# A law that mobilised tan(phi) = 0.577 (30 deg) or the Mohr-Coulomb
+# sin(phi) = 0.5 (26.57 deg) would not flow at 26.5 deg; a friction below
+# 0.466 would flow at 25 deg. ~10 s.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+
+eta=0.48038
+meanVelocity()  # case -> "t u" per written time (mean x velocity of the points)
+{
+    "$PY" - "$1" <<'EOF'
+import sys
+import mpmPost
+case = sys.argv[1]
+for t in mpmPost.times(case)[1:]:
+    print(t, mpmPost.read_cloud_field(case, t, "U")[:, 0].mean())
+EOF
+}
+
+for theta in 25 26.5; do
+    for nH in 4 16; do
+        c=$(copyTutorial mpm/inclinedPlaneFlow "theta${theta}_n$nH")
+        rm -rf "$c/run"
+        "$PY" - "$c/constant/mpmProperties" <<'EOF'
+import re, sys
+p = sys.argv[1]; s = open(p).read()
+sand = """materials
+{
+    sand { model druckerPrager; rho 1600; E 2e6; nu 0.3; phi 30; c 0; psi 0; }
+}
+"""
+s = re.sub(r"materials\s*\{.*?\n\}\n", sand, s, flags=re.S)
+s = re.sub(r"maxDeltaT\s+[^;]*;", "maxDeltaT 1e-3;", s)
+open(p, "w").write(s)
+EOF
+        sed -i -e 's/^\( *material \).*;/\1 sand;/' "$c/system/mpmSetParticlesDict"
+        sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^writeInterval .*/writeInterval 0.1;/' \
+            "$c/system/controlDict"
+        (cd "$c" && ./setCase "$theta" "$nH" 0.04 > log.setCase && blockMesh > log.blockMesh 2>&1 \
+            && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+            || { echo "FAIL: run theta = $theta, nH = $nH"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
+        u=$(meanVelocity "$c")
+        echo "theta = $theta deg, $nH cells across the layer: mean velocity [m/s] at t =" $u
+        seededPoints "$c" "theta = $theta deg, nH = $nH: "
+        if [ "$theta" = 25 ]; then
+            umax=$(echo "$u" | awk '{v = $2 < 0 ? -$2 : $2; if (v > m) m = v} END {print m + 0}')
+            check "theta = 25 deg < atan(eta), nH = $nH: the layer holds (max |mean u| < 1e-3 m/s)" \
+                "u < 1e-3" u="$umax"
+        else
+            read -r acc <<< "$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2}
+                END {print (u1 - u0)/(t1 - t0)}')"
+            ratio=$(awk -v a="$acc" -v e="$eta" -v t="$theta" 'BEGIN {
+                r = t*atan2(0, -1)/180; print a/(9.81*(sin(r) - e*cos(r))) }')
+            echo "theta = $theta deg, nH = $nH: mean acceleration $acc m/s^2, $ratio of the rigid block's"
+            check "theta = 26.5 deg > atan(eta), nH = $nH: it flows, acceleration / rigid block in [0.5, 1]" \
+                "0.5 <= r <= 1" r="$ratio"
+            eval "acc$nH=$acc"
+        fi
+    done
+done
+[ -n "${acc4:-}" ] && [ -n "${acc16:-}" ] && check "26.5 deg: 4-cell and 16-cell layers accelerate alike (within 25 %)" \
+    "abs(a - b)/b < 0.25" a="$acc4" b="$acc16"
+finish
