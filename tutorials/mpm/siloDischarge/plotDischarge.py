@@ -211,6 +211,18 @@ def main():
         print("resolved slots (D/h >= 10): %s; W ~ D^%.3f (k d = 0); C = %s, mean %.3f"
               % (" ".join("D = %g (h = %g)" % (r["D"], cell(r)) for r in resolved), n,
                  " ".join("%.3f" % c for c in C), C.mean()))
+    # One relative resolution D/h for every width: the exponent without the
+    # bias of resolving the narrow slots worse than the wide ones
+    for ratio in sorted(set(round(r["D"]/cell(r)) for r in sand)):
+        same = sorted([r for r in sand if round(r["D"]/cell(r)) == ratio], key=lambda r: r["D"])
+        if len(set(r["D"] for r in same)) < 3:
+            continue
+        D = np.array([r["D"] for r in same]); W = np.array([r["W"] for r in same])
+        n = np.polyfit(np.log(D), np.log(W), 1)[0]
+        C = W/(RHO*np.sqrt(G)*D**1.5)
+        print("D/h = %d for every width: %s; W ~ D^%.3f (k d = 0); C = %s, mean %.3f"
+              % (ratio, " ".join("D = %g (h = %g)" % (r["D"], cell(r)) for r in same), n,
+                 " ".join("%.3f" % c for c in C), C.mean()))
     for Dv in sorted(set(r["D"] for r in sand)):
         same = sorted([r for r in sand if r["D"] == Dv], key=cell, reverse=True)
         if len(same) > 1:
