@@ -39,5 +39,36 @@ inline std::vector<Real> realList(const std::string& s)
     return out;
 }
 
+// Walks the command line option by option for both analyses' parsers:
+// `--help`/`-h` prints the usage and exits; value() takes the word after the
+// current option, or fails naming it.
+class Arguments
+{
+public:
+    Arguments(int argc, char** argv, void (*usage)()) : argc_(argc), argv_(argv), usage_(usage) {}
+
+    // Advances to the next option; false past the last one.
+    bool next()
+    {
+        if (++i_ >= argc_) return false;
+        option_ = argv_[i_];
+        if (option_ == "--help" || option_ == "-h") { usage_(); std::exit(0); }
+        return true;
+    }
+    const std::string& option() const { return option_; }
+    std::string value()
+    {
+        if (i_ + 1 >= argc_) fail("missing value after " + option_);
+        return argv_[++i_];
+    }
+
+private:
+    int argc_;
+    char** argv_;
+    void (*usage_)();
+    int i_ = 0;
+    std::string option_;
+};
+
 } // namespace cli
 } // namespace mpm

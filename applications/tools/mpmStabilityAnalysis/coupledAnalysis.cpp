@@ -100,15 +100,12 @@ CoupledOptions parse(int argc, char** argv)
     o.limitOptions.thetaIntervals = 90;
     o.limitOptions.scanPoints = 200;
     bool maxSet = false;
-    for (int i = 1; i < argc; ++i)
+    cli::Arguments args(argc, argv, usage);
+    while (args.next())
     {
-        const std::string a = argv[i];
-        auto next = [&]() -> std::string {
-            if (i + 1 >= argc) fail("missing value after " + a);
-            return argv[++i];
-        };
-        if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-        else if (a == "--model") next();
+        const std::string& a = args.option();
+        const auto next = [&args]() { return args.value(); };
+        if (a == "--model") next();
         else if (a == "--solid") { if (!parseModel(next(), o.base.solid.model)) fail("unknown solid model (diffusion wave)"); }
         else if (a == "--shape") { const std::string n = next(); if (!parseShape(n, o.base.solid.shape)) fail("unknown shape " + n + "; valid: " + validShapeNames()); }
         else if (a == "--alpha") o.base.solid.alpha = toReal(next());

@@ -72,15 +72,12 @@ using cli::splitList;
 Options parse(int argc, char** argv)
 {
     Options o;
-    for (int i = 1; i < argc; ++i)
+    cli::Arguments args(argc, argv, usage);
+    while (args.next())
     {
-        const std::string a = argv[i];
-        auto next = [&]() -> std::string {
-            if (i + 1 >= argc) fail("missing value after " + a);
-            return argv[++i];
-        };
-        if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-        else if (a == "--model") { if (!parseModel(next(), o.model)) fail("unknown model"); }
+        const std::string& a = args.option();
+        const auto next = [&args]() { return args.value(); };
+        if (a == "--model") { if (!parseModel(next(), o.model)) fail("unknown model"); }
         else if (a == "--shape")
         {
             o.shapes.clear();
