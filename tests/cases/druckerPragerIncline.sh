@@ -22,10 +22,14 @@
 #  2. theta = 26.5 deg (tan = 0.499 > eta): it accelerates; the mean
 #     acceleration over t = 0.1..0.5 s is within [0.5, 1] of the rigid
 #     block's 0.160 m/s^2 (measured 0.71 at 4 cells, 0.78 at 16);
-#  3. the 4-cell and the 16-cell layers' accelerations agree within 25 %.
+#  3. the 4-cell and the 16-cell layers' accelerations agree within 25 %;
+#  4. on a horizontal friction floor (mu = 0.45, cells of 5 mm), a layer one
+#     point row (2.5 mm), 2 cells and 8 cells thick, thrown at 1 m/s,
+#     decelerates at mu g within 2 %: the floor brakes a thin layer as it
+#     brakes a thick one.
 # A law that mobilised tan(phi) = 0.577 (30 deg) or the Mohr-Coulomb
 # sin(phi) = 0.5 (26.57 deg) would not flow at 26.5 deg; a friction below
-# 0.466 would flow at 25 deg. ~10 s.
+# 0.466 would flow at 25 deg. ~15 s.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -41,11 +45,11 @@ for t in mpmPost.times(case)[1:]:
 EOF
 }
 
-for theta in 25 26.5; do
-    for nH in 4 16; do
-        c=$(copyTutorial mpm/inclinedPlaneFlow "theta${theta}_n$nH")
-        rm -rf "$c/run"
-        "$PY" - "$c/constant/mpmProperties" <<'EOF'
+# sandMaterial FILE: the tutorial's material replaced by the sand of
+# granularColumnCollapse, with the time-step cap of that tutorial
+sandMaterial()
+{
+    "$PY" - "$1" <<'EOF'
 import re, sys
 p = sys.argv[1]; s = open(p).read()
 sand = """materials
@@ -57,6 +61,13 @@ s = re.sub(r"materials\s*\{.*?\n\}\n", sand, s, flags=re.S)
 s = re.sub(r"maxDeltaT\s+[^;]*;", "maxDeltaT 1e-3;", s)
 open(p, "w").write(s)
 EOF
+}
+
+for theta in 25 26.5; do
+    for nH in 4 16; do
+        c=$(copyTutorial mpm/inclinedPlaneFlow "theta${theta}_n$nH")
+        rm -rf "$c/run"
+        sandMaterial "$c/constant/mpmProperties"
         sed -i -e 's/^\( *material \).*;/\1 sand;/' "$c/system/mpmSetParticlesDict"
         sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^writeInterval .*/writeInterval 0.1;/' \
             "$c/system/controlDict"
@@ -81,6 +92,25 @@ EOF
             eval "acc$nH=$acc"
         fi
     done
+done
+# 4. Thin and thick layers sliding on the friction floor
+for delta in 0.0025 0.01 0.04; do
+    c=$(copyTutorial mpm/inclinedPlaneFlow "slide$delta")
+    rm -rf "$c/run"
+    sandMaterial "$c/constant/mpmProperties"
+    sed -i -e 's/^ *floor .*/    floor   { type friction; frictionCoefficient 0.45; }/' "$c/constant/mpmProperties"
+    (cd "$c" && ./setCase 0 8 0.04 > log.setCase) || { failures=$((failures + 1)); continue; }
+    sed -i -e 's/^\( *material \).*;/\1 sand;/' -e "s/^\( *max \).*;/\1          (0.02 $delta 0.005);/" \
+        -e 's/value (0 0 0);/value (1 0 0);/' "$c/system/mpmSetParticlesDict"
+    sed -i -e 's/^endTime .*/endTime 0.15;/' -e 's/^writeInterval .*/writeInterval 0.05;/' "$c/system/controlDict"
+    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
+        && mpmFoam > log.mpmFoam 2>&1) \
+        || { echo "FAIL: run slide, layer $delta m"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
+    u=$(meanVelocity "$c")
+    ratio=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u0 - u1)/(t1 - t0)/(0.45*9.81)}')
+    echo "layer $delta m on the friction floor: mean velocity [m/s] at t =" $u
+    check "layer $delta m thick (h = 0.005 m) on a mu = 0.45 floor decelerates at mu g within 2 %" \
+        "abs(r - 1) <= 0.02" r="$ratio"
 done
 [ -n "${acc4:-}" ] && [ -n "${acc16:-}" ] && check "26.5 deg: 4-cell and 16-cell layers accelerate alike (within 25 %)" \
     "abs(a - b)/b < 0.25" a="$acc4" b="$acc16"

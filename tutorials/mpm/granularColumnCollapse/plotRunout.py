@@ -21,7 +21,7 @@ import sys
 import numpy as np
 
 import mpmPost
-from plotProfile import measure
+from plotProfile import mass_front, measure
 
 
 # The materials of constant/mpmProperties, by law
@@ -44,26 +44,37 @@ def run_parameters(run):
 def main():
     runs = [r for r in sys.argv[1:] if not r.startswith("--")]
     rows = []
-    print("%-26s %5s %7s %6s %8s %8s %8s %7s %10s %8s" % ("material", "a", "h [m]", "points", "runout",
-          "farthest", "Lube", "ratio", "maxU end", "t end"))
+    print("%-26s %5s %7s %6s %8s %8s %8s %7s %10s %8s %9s %9s" % ("material", "a", "h [m]", "points", "runout",
+          "farthest", "Lube", "ratio", "maxU end", "t end", "front90", "travel"))
     for run in runs:
         law, a, h = run_parameters(run)
         m = measure(run)
         runout = (m["Lf"] - m["a0"])/m["a0"]
         s = mpmPost.read_summary(run)
-        rows.append((law, a, h, runout))
+        # The bulk of the deposit: the front of 90 % of the mass and the
+        # centre of mass's travel, both relative to a0
+        mass = mpmPost.read_cloud_field(run, m["times"][-1], "mass")
+        mass0 = mpmPost.read_cloud_field(run, m["times"][0], "mass")
+        front90 = (mass_front(m["x1"], mass, 0.9) - m["a0"])/m["a0"]
+        travel = (np.dot(mass, m["x1"][:, 0])/mass.sum() - np.dot(mass0, m["x0"][:, 0])/mass0.sum())/m["a0"]
+        rows.append((law, a, h, runout, front90, travel))
         farthest = (m["LfMax"] - m["a0"])/m["a0"]
-        print("%-26s %5g %7g %6d %8.3f %8.3f %8.3f %7.3f %10.3g %8s" % (law, m["h0"]/m["a0"], h, len(m["x1"]),
-              runout, farthest, lube(a), runout/lube(a), s["maxU"][-1], m["times"][-1]))
+        print("%-26s %5g %7g %6d %8.3f %8.3f %8.3f %7.3f %10.3g %8s %9.3f %9.4f" % (
+              law, m["h0"]/m["a0"], h, len(m["x1"]), runout, farthest, lube(a), runout/lube(a),
+              s["maxU"][-1], m["times"][-1], front90, travel))
 
-    print("Change of the runout when the cell size halves:")
-    for law in sorted({r[0] for r in rows}):
-        for a in sorted({r[1] for r in rows if r[0] == law}):
-            by_h = sorted((h, ro) for l, aa, h, ro in rows if l == law and aa == a)
-            for (h2, r2), (h1, r1) in zip(by_h, by_h[1:]):
-                if abs(h1/h2 - 2) < 1e-6:
-                    print("  %-16s a = %-4g h %g -> %g: %.3f -> %.3f (%+.1f %%)"
-                          % (law, a, h1, h2, r1, r2, 100*(r2 - r1)/r1))
+    # The front (99.9 % of the mass) lies in a tail that thins under
+    # refinement down to the point spacing, so it converges last; the bulk
+    # (90 % front, centre of mass) converges first (README).
+    for column, name in ((3, "runout"), (4, "90 % front"), (5, "centre-of-mass travel")):
+        print("Change of the %s when the cell size halves:" % name)
+        for law in sorted({r[0] for r in rows}):
+            for a in sorted({r[1] for r in rows if r[0] == law}):
+                by_h = sorted((r[2], r[column]) for r in rows if r[0] == law and r[1] == a)
+                for (h2, r2), (h1, r1) in zip(by_h, by_h[1:]):
+                    if abs(h1/h2 - 2) < 1e-6:
+                        print("  %-16s a = %-4g h %g -> %g: %.3f -> %.3f (%+.1f %%)"
+                              % (law, a, h1, h2, r1, r2, 100*(r2 - r1)/r1))
 
     if "--no-plot" in sys.argv:
         return
@@ -81,7 +92,7 @@ def main():
     for law in sorted({r[0] for r in rows}):
         colour = colours.setdefault(law, "C%d" % len(colours))
         for h, mk in zip(sizes, markers):
-            pts = sorted((a, ro) for l, a, hh, ro in rows if l == law and hh == h)
+            pts = sorted((r[1], r[3]) for r in rows if r[0] == law and r[2] == h)
             if pts:
                 ax.plot(*zip(*pts), mk, color=colour, mfc="none" if h != sizes[-1] else colour,
                         ms=6, label="%s, h = %g m" % (LABELS.get(law, law), h))
