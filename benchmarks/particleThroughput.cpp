@@ -98,27 +98,29 @@ int main(int argc, char** argv)
         std::printf("# ceilings at %d thread(s): triad %.2f GB/s, FMA peak %.2f GFLOP/s (ceilings.hpp)\n",
                     t, bandwidth[t], peak[t]);
     }
-    std::printf("%-18s %8s %10s %12s %14s %11s %10s %10s %10s %10s %10s %9s %9s %7s %7s %7s\n", "shape", "threads",
+    std::printf("%-18s %8s %10s %12s %14s %11s %10s %10s %10s %10s %10s %9s %9s %7s %7s %7s %9s\n", "shape", "threads",
                 "points", "ms/step", "Mpoint-step/s", "cpu Mpt-s/s", "P2G%", "nodal%", "G2P%", "stress%", "stress-ms",
-                "B/pt-step", "fl/pt-step", "GB/s", "%triad", "%peak");
+                "B/pt-step", "fl/pt-step", "GB/s", "%triad", "%peak", "P2G loop");
     for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
     for (int threads = 1; threads <= maxThreads; ++threads)
     {
         omp_set_num_threads(threads);
         MpmSystem s = makeBlock(shape, n, reorder, shuffle);
-        // one warm-up step: first-touch allocation
-        const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), 1, steps);
+        // warm-up: first-touch allocation and the P2G loop's timing trials
+        const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), P2gRowChoice::tuningSteps, steps);
         const double sec = r.seconds;
         const StepTimers& t = r.phases;
         const double tot = t.total();
         const double rate = s.particles().size()*double(steps)/sec;     // point-steps/s
         const bench::StepCost cost = bench::stepCost(shape, s.particles().size(), s.activeNodeCount());
-        std::printf("%-18s %8d %10lld %12.2f %14.3f %11.3f %10.1f %10.1f %10.1f %10.1f %10.2f %9.0f %9.0f %7.2f %7.1f %7.1f\n",
+        // P2G loop: the one the first steps' timing chose (step/p2gRowChoice.hpp)
+        std::printf("%-18s %8d %10lld %12.2f %14.3f %11.3f %10.1f %10.1f %10.1f %10.1f %10.2f %9.0f %9.0f %7.2f %7.1f %7.1f %9s\n",
                     shapeName(shape), threads, (long long)s.particles().size(), 1e3*sec/steps, rate/1e6,
                     s.particles().size()*double(steps)/(r.cpuSeconds/threads)/1e6,
                     100*t.p2g/tot, 100*t.nodal/tot, 100*t.g2p/tot, 100*t.constitutive/tot,
                     1e3*t.constitutive/steps, cost.bytes, cost.flops, cost.bytes*rate/1e9,
-                    100*cost.bytes*rate/1e9/bandwidth[threads], 100*cost.flops*rate/1e9/peak[threads]);
+                    100*cost.bytes*rate/1e9/bandwidth[threads], 100*cost.flops*rate/1e9/peak[threads],
+                    s.p2gRowChoice().chosenRows() ? "rows" : "nodes");
     }
     // The cuda back-end (docs/gpu.md): the point work on the GPU, the node
     // work and the transfers' packing on 1 CPU thread
@@ -137,7 +139,7 @@ int main(int argc, char** argv)
         for (Backend b : {Backend::serial, Backend::cuda})
         {
             MpmSystem s = makeBlock(shape, n, reorder, shuffle, b);
-            const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), 1, steps);
+            const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), P2gRowChoice::tuningSteps, steps);
             const StepTimers& t = r.phases;
             const double tot = t.total();
             const double rate = s.particles().size()*double(steps)/r.seconds/1e6;

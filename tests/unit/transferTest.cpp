@@ -183,6 +183,77 @@ TEST(Transfer, ThreadCountIndependent)
     }
 }
 
+TEST(Transfer, P2gRowLoopChangesNoBit)
+{
+    // The 3D P2G without APIC adds each node's terms in the same order
+    // whether it walks the node rows as vector loops or node by node, so
+    // the run-time choice between them (step/p2gRowChoice.hpp) can never
+    // change a result: forced rows, forced nodes and the automatic choice
+    // (which alternates both while it times them) give the same bits. A
+    // stress and USL/USF/MUSL make every scatter (mass, momentum, force,
+    // the MUSL re-map) non-trivial.
+    for (auto shape : allShapes)
+    for (auto order : {StressUpdate::USL, StressUpdate::USF, StressUpdate::MUSL})
+    {
+        std::array<std::vector<Real>, 3> xs[3], vs[3];
+        std::array<std::vector<Real>, 6> sig[3];
+        const P2gRowLoop modes[3] = {P2gRowLoop::always, P2gRowLoop::never, P2gRowLoop::automatic};
+        for (int run = 0; run < 3; ++run)
+        {
+            MpmSystem s = periodicSystem(shape, 3, Transfer::picFlip, 0.9, 3000);
+            s.materials()[0] = makeLaw("linearElastic", {{"rho", 1}, {"E", 10}, {"nu", 0.3}});
+            StepOptions o = s.options();
+            o.stressUpdate = order;
+            o.p2gRowLoop = modes[run];
+            s.setup(s.lattice(), BoundarySpec{{WallCondition{WallType::periodic, 0}}, {}}, o);
+            for (Index n = 0; n < P2gRowChoice::tuningSteps + 2; ++n) s.step(2e-3);
+            EXPECT_TRUE(s.p2gRowChoice().decided());
+            xs[run] = s.particles().x; vs[run] = s.particles().v; sig[run] = s.particles().sigma;
+        }
+        for (int run = 1; run < 3; ++run)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                EXPECT_EQ(xs[0][d], xs[run][d]) << shapeName(shape) << " run " << run;
+                EXPECT_EQ(vs[0][d], vs[run][d]) << shapeName(shape) << " run " << run;
+            }
+            for (int c = 0; c < 6; ++c) EXPECT_EQ(sig[0][c], sig[run][c]) << shapeName(shape) << " run " << run;
+        }
+        EXPECT_GT(std::abs(sig[0][XY][17]), 0.0);
+    }
+}
+
+TEST(Transfer, P2gRowChoiceKeepsTheFasterLoop)
+{
+    // The automatic choice: rows in the warm-up, then alternating trials,
+    // then the loop with the smaller summed trial time, for good.
+    for (bool rowsFaster : {true, false})
+    {
+        P2gRowChoice c;
+        for (Index step = 0; step < P2gRowChoice::tuningSteps; ++step)
+        {
+            const bool rows = c.rows(step);
+            if (step < P2gRowChoice::warmupSteps) EXPECT_TRUE(rows);
+            else EXPECT_EQ(rows, (step - P2gRowChoice::warmupSteps) % 2 == 0);
+            EXPECT_FALSE(c.decided());
+            // Two scatters per step (USL with MUSL-like re-map): both count
+            const double t = rows == rowsFaster ? 1.0 : 1.5;
+            c.record(step, rows, t);
+            c.record(step, rows, t);
+        }
+        for (Index step = P2gRowChoice::tuningSteps; step < P2gRowChoice::tuningSteps + 5; ++step)
+        {
+            EXPECT_EQ(c.rows(step), rowsFaster);
+            c.record(step, !rowsFaster, 0.0);   // after the choice, times are ignored
+        }
+        EXPECT_TRUE(c.decided());
+        EXPECT_LT(c.trialSeconds(rowsFaster), c.trialSeconds(!rowsFaster));
+    }
+    EXPECT_TRUE(P2gRowChoice(P2gRowLoop::always).rows(0));
+    EXPECT_FALSE(P2gRowChoice(P2gRowLoop::never).rows(0));
+    EXPECT_FALSE(P2gRowChoice(P2gRowLoop::never).rows(100));
+}
+
 TEST(Boundary, NoSlipWallVelocityVanishesOnWall)
 {
     // Ghost mirroring makes the interpolated velocity zero on a no-slip

@@ -12,7 +12,10 @@
 
 namespace mpm {
 
-template<class K, int D, bool MassMomentum, bool Force, bool Apic, class Add>
+// Rows: 3D without APIC, each row of W nodes along x as one vector loop
+// (same terms, same order, same bits as node by node; step/p2gRowChoice.hpp
+// chooses it per run by timing).
+template<class K, int D, bool MassMomentum, bool Force, bool Apic, bool Rows = true, class Add>
 MPM_HOST_DEVICE inline void p2gPoint
 (
     const Lattice& L, const PointView& P, const GridView& g,
@@ -30,7 +33,7 @@ MPM_HOST_DEVICE inline void p2gPoint
     if constexpr (Apic) for (int e = 0; e < 9; ++e) Cp[e] = P.C[e][p];
     const Real sxx = P.sigma[XX][p], syy = P.sigma[YY][p], szz = P.sigma[ZZ][p];
     const Real sxy = P.sigma[XY][p], syz = P.sigma[YZ][p], sxz = P.sigma[XZ][p];
-    if constexpr (D == 3 && !Apic)
+    if constexpr (D == 3 && !Apic && Rows)
     {
         // 3D without the APIC offsets: one loop over each row of W nodes
         // along x, contiguous in memory (Lattice: axes (0, 1, 2), stride[0]
@@ -39,7 +42,8 @@ MPM_HOST_DEVICE inline void p2gPoint
         // the same expressions, in the same order as in forEach's loop.
         // Measured trade-off (benchmarks/mppicComparison/README.md): P2G
         // of the 32^3 block 2x faster with cubic B-splines, but 1.4x
-        // slower on the coupled mppicComparison scene's small grid.
+        // slower on the coupled mppicComparison scene's small grid; hence
+        // the choice by timing (step/p2gRowChoice.hpp).
         const Index s1 = L.stride[1], s2 = L.stride[2];
         for (int k = 0; k < K::width; ++k)
         for (int j = 0; j < K::width; ++j)

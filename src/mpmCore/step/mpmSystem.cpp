@@ -8,6 +8,7 @@
 #include "../kernels/views.hpp"
 #include "../transfer/stencil.hpp"
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -44,6 +45,7 @@ void MpmSystem::setup
         boundary_.build(lattice_, spec);
     }
     options_ = options;
+    p2gRows_ = P2gRowChoice(options_.p2gRowLoop);
     removedCount_.assign(spec.conditions.size(), 0);
     removedMass_.assign(spec.conditions.size(), 0.0);
     clamped_ = 0;
@@ -291,19 +293,37 @@ void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
     auto& g = grid_;
     if (velocityOnly) region_.zero({g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()});
     auto pick = [](bool x, auto&& k) { if (x) k(std::true_type{}); else k(std::false_type{}); };
+    const bool apic = options_.transfer == Transfer::apic;
+    // Only the 3D P2G without APIC has the two loops to choose from
+    const bool choice = D == 3 && !apic;
+    const bool rows = choice ? p2gRows_.rows(stepCount_) : true;
+    const auto t0 = std::chrono::steady_clock::now();
     pick(massMomentum, [&](auto mm)
     {
         pick(force, [&](auto f)
         {
-            pick(options_.transfer == Transfer::apic, [&](auto apic)
+            pick(apic, [&](auto a)
             {
-                scatterKernel<K, D, decltype(mm)::value, decltype(f)::value, decltype(apic)::value>();
+                constexpr bool MM = decltype(mm)::value, F = decltype(f)::value, A = decltype(a)::value;
+                if constexpr (D == 3 && !A)
+                {
+                    pick(rows, [&](auto r) { scatterKernel<K, D, MM, F, A, decltype(r)::value>(); });
+                }
+                else
+                {
+                    scatterKernel<K, D, MM, F, A, true>();
+                }
             });
         });
     });
+    if (choice)
+    {
+        p2gRows_.record(stepCount_, rows,
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
 }
 
-template<class K, int D, bool MassMomentum, bool Force, bool Apic>
+template<class K, int D, bool MassMomentum, bool Force, bool Apic, bool Rows>
 void MpmSystem::scatterKernel()
 {
     std::vector<Real> invRho0(materials_.size());
@@ -314,7 +334,7 @@ void MpmSystem::scatterKernel()
     const bool grainVolume = options_.constantGrainVolume;
     forEachPointColoured([&](Index p)
     {
-        p2gPoint<K, D, MassMomentum, Force, Apic>(L, P, g, invRho0.data(), grainVolume, p, PlainAdd{});
+        p2gPoint<K, D, MassMomentum, Force, Apic, Rows>(L, P, g, invRho0.data(), grainVolume, p, PlainAdd{});
     });
 }
 

@@ -114,6 +114,8 @@ public:
     const Particles& particles() const { return particles_; }
     const GridState& grid() const { return grid_; }
     const StepTimers& timers() const { return timers_; }
+    // The 3D non-APIC P2G's loop choice and its trial times (p2gRowChoice.hpp)
+    const P2gRowChoice& p2gRowChoice() const { return p2gRows_; }
     Index stepCount() const { return stepCount_; }
     // Points the last stress update compressed to J <= 0 or volume <= 0,
     // on this rank (a NaN is the non-finite stop's): how many, and the one
@@ -193,7 +195,7 @@ private:
     void findFirstInverted();
     // P2G; massMomentum (a fresh P2G) must come right after binPoints()
     template<class K, int D> void scatter(bool massMomentum, bool force, bool velocityOnly);
-    template<class K, int D, bool MassMomentum, bool Force, bool Apic> void scatterKernel();
+    template<class K, int D, bool MassMomentum, bool Force, bool Apic, bool Rows> void scatterKernel();
     template<class K, int D> void gather(Real dt);
     template<class K, int D, bool Apic> void gatherKernel(Real dt);
     template<class K, int D> void gradientFromGrid(const std::array<std::vector<Real>, 3>& v);
@@ -255,6 +257,7 @@ private:
     Binning binning_;
     ActiveRegion region_;
     mutable StepTimers timers_;
+    P2gRowChoice p2gRows_;
     FluidCoupling coupling_;
     Index stepCount_ = 0;
     Index migrated_ = 0;

@@ -1,6 +1,7 @@
 // Algorithmic choices of one MPM step, as selected in constant/mpmProperties.
 #pragma once
 #include "../backend/backend.hpp"
+#include "p2gRowChoice.hpp"
 #include "../shapeFunctions/shapeFunctions.hpp"
 #include <array>
 #include <string>
@@ -66,6 +67,9 @@ struct StepOptions
     bool reorderPoints = true;
     // Who launches the kernel bodies (backend/backend.hpp)
     Backend backend = Backend::openmp;
+    // 3D P2G without APIC: node rows as vector loops or node by node, by
+    // timing unless forced (step/p2gRowChoice.hpp; no effect on results)
+    P2gRowLoop p2gRowLoop = P2gRowLoop::automatic;
 };
 
 } // namespace mpm

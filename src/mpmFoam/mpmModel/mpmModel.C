@@ -438,5 +438,15 @@ void Foam::mpmModel::summary
     }
     line("I/O          ", io);
     for (const auto& e : named) line(e.first(), e.second());
+    // 3D without APIC: which P2G loop the first steps' timing chose (this
+    // rank's; the results are the same bits either way)
+    const mpm::P2gRowChoice& rowChoice = system_.p2gRowChoice();
+    if (rowChoice.decided() && rowChoice.trialSeconds(true) > 0 && rowChoice.trialSeconds(false) > 0)
+    {
+        os  << "  P2G loop chosen by timing " << mpm::P2gRowChoice::trialSteps
+            << " trial steps: " << (rowChoice.chosenRows() ? "node rows" : "node by node")
+            << " (rows " << rowChoice.trialSeconds(true) << " s, node by node "
+            << rowChoice.trialSeconds(false) << " s)" << nl;
+    }
     os  << endl;
 }
