@@ -171,8 +171,7 @@ void MpmSystem::mapToGrid()
 void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
 {
     out.assign(materials_.size(), std::vector<Real>(lattice_.nNodes, 0.0));
-    std::vector<Real> invRho0(materials_.size());
-    for (std::size_t i = 0; i < materials_.size(); ++i) invRho0[i] = 1.0/materials_[i]->rho0();
+    const std::vector<Real> invRho0 = inverseDensities();
     const auto& P = particles_;
     dispatch([&](auto k, auto d)
     {
@@ -326,8 +325,7 @@ void MpmSystem::scatter(bool massMomentum, bool force, bool velocityOnly)
 template<class K, int D, bool MassMomentum, bool Force, bool Apic, bool Rows>
 void MpmSystem::scatterKernel()
 {
-    std::vector<Real> invRho0(materials_.size());
-    for (std::size_t i = 0; i < materials_.size(); ++i) invRho0[i] = 1.0/materials_[i]->rho0();
+    const std::vector<Real> invRho0 = inverseDensities();
     const PointView P = pointView(particles_, L_, dx_);
     const GridView g = gridView(grid_);
     const Lattice& L = lattice_;
@@ -723,37 +721,58 @@ void MpmSystem::updateStress(Real dt)
 {
     auto& P = particles_;
     const Index n = P.size();
-    // The laws as kernel parameters, once per step (no virtual call per point)
-    std::vector<LawParams> laws(materials_.size());
-    for (std::size_t m = 0; m < materials_.size(); ++m) laws[m] = materials_[m]->params();
+    const std::vector<LawParams> laws = lawTable();
     const LawParams* table = laws.data();
     const PointView view = pointView(P, L_, dx_);
     Index firstBad = n;
     Index nInverted = 0;
-    std::int64_t firstInverted = std::numeric_limits<std::int64_t>::max();
-    #pragma omp parallel for schedule(static) reduction(min:firstBad, firstInverted) reduction(+:nInverted) if(worthThreads(n))
+    #pragma omp parallel for schedule(static) reduction(min:firstBad) reduction(+:nInverted) if(worthThreads(n))
     for (Index p = 0; p < n; ++p)
     {
         const StressPointStatus status = stressPoint(view, table, dt, p);
         if (status == StressPointStatus::bad) firstBad = std::min(firstBad, p);
-        else if (status == StressPointStatus::inverted)
-        {
-            ++nInverted;
-            firstInverted = std::min<std::int64_t>(firstInverted, P.id[p]);
-        }
+        else if (status == StressPointStatus::inverted) ++nInverted;
     }
     stopIfNonFinite(firstBad, "stress or deformation");
     inverted_ = InvertedPoints{};
     inverted_.count = nInverted;
-    for (Index p = 0; nInverted > 0 && p < n; ++p)
+    if (nInverted > 0) findFirstInverted();
+}
+
+// The laws as kernel parameters, once per step (no virtual call per point)
+std::vector<LawParams> MpmSystem::lawTable() const
+{
+    std::vector<LawParams> laws(materials_.size());
+    for (std::size_t m = 0; m < materials_.size(); ++m) laws[m] = materials_[m]->params();
+    return laws;
+}
+
+// 1/rho0 per material: a point's grain volume is its mass times it
+std::vector<Real> MpmSystem::inverseDensities() const
+{
+    std::vector<Real> inv(materials_.size());
+    for (std::size_t m = 0; m < materials_.size(); ++m) inv[m] = 1.0/materials_[m]->rho0();
+    return inv;
+}
+
+// inverted_ for its count (host and device steps): the point of lowest id
+// among those with J <= 0 or a volume not positive
+void MpmSystem::findFirstInverted()
+{
+    const Particles& P = particles_;
+    std::int64_t first = std::numeric_limits<std::int64_t>::max();
+    Index at = -1;
+    for (Index p = 0; p < P.size(); ++p)
     {
-        if (P.id[p] != firstInverted) continue;
-        inverted_.id = firstInverted;
-        inverted_.material = P.material[p];
-        inverted_.J = P.J(p);
-        inverted_.volume = P.volume[p];
-        break;
+        if (!(P.J(p) <= 0 || P.volume[p] <= 0) || P.id[p] >= first) continue;
+        first = P.id[p];
+        at = p;
     }
+    if (at < 0) return;
+    inverted_.id = first;
+    inverted_.material = P.material[at];
+    inverted_.J = P.J(at);
+    inverted_.volume = P.volume[at];
 }
 
 void MpmSystem::stopIfNonFinite(Index firstBad, const char* what)
@@ -882,13 +901,8 @@ void MpmSystem::stepOnDevice(Real dt)
     const ShapeKind shape = options_.shape;
     const unsigned massMomentum = DeviceStep::gridMass | DeviceStep::gridVolume | DeviceStep::gridMomentum;
     const unsigned force = DeviceStep::gridForce;
-    std::vector<LawParams> laws(materials_.size());
-    std::vector<Real> invRho0(materials_.size());
-    for (std::size_t m = 0; m < materials_.size(); ++m)
-    {
-        laws[m] = materials_[m]->params();
-        invRho0[m] = 1.0/materials_[m]->rho0();
-    }
+    const std::vector<LawParams> laws = lawTable();
+    const std::vector<Real> invRho0 = inverseDensities();
     {
         ScopedTimer t(timers_.p2g);
         binPoints();   // first: the points go up in block order
@@ -994,24 +1008,6 @@ void MpmSystem::movePointsOnDevice(bool apic)
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
     removeLeaving(leaving);
-}
-
-void MpmSystem::findFirstInverted()
-{
-    const Particles& P = particles_;
-    std::int64_t first = std::numeric_limits<std::int64_t>::max();
-    Index at = -1;
-    for (Index p = 0; p < P.size(); ++p)
-    {
-        if (!(P.J(p) <= 0 || P.volume[p] <= 0) || P.id[p] >= first) continue;
-        first = P.id[p];
-        at = p;
-    }
-    if (at < 0) return;
-    inverted_.id = first;
-    inverted_.material = P.material[at];
-    inverted_.J = P.J(at);
-    inverted_.volume = P.volume[at];
 }
 #endif // MPM_HAVE_CUDA
 

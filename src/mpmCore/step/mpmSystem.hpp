@@ -193,6 +193,9 @@ private:
     void removeLeaving(Index leaving);
     // inverted_ for its count: the inverted point of lowest id
     void findFirstInverted();
+    // Per material: the law's kernel parameters, 1/rho0
+    std::vector<LawParams> lawTable() const;
+    std::vector<Real> inverseDensities() const;
     // P2G; massMomentum (a fresh P2G) must come right after binPoints()
     template<class K, int D> void scatter(bool massMomentum, bool force, bool velocityOnly);
     template<class K, int D, bool MassMomentum, bool Force, bool Apic, bool Rows> void scatterKernel();
