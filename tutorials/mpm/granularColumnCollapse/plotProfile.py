@@ -71,10 +71,11 @@ def measure(case="."):
     dp = spacing(x0)
     a0 = x0[:, 0].max() + dp/2 - (x0[:, 0].min() - dp/2)
     h0 = x0[:, 1].max() + dp/2 - (x0[:, 1].min() - dp/2)
-    Lf = mass_front(x1, mpmPost.read_cloud_field(case, ts[-1], "mass"))
+    m1 = mpmPost.read_cloud_field(case, ts[-1], "mass")
+    Lf = mass_front(x1, m1)
     LfMax = x1[:, 0].max() + dp/2
     Hf = x1[:, 1].max() + dp/2
-    return dict(times=ts, x0=x0, x1=x1, dp=dp, a0=a0, h0=h0, Lf=Lf, LfMax=LfMax, Hf=Hf)
+    return dict(times=ts, x0=x0, x1=x1, m1=m1, dp=dp, a0=a0, h0=h0, Lf=Lf, LfMax=LfMax, Hf=Hf)
 
 
 def empirical(a):

@@ -53,7 +53,7 @@ def main():
         s = mpmPost.read_summary(run)
         # The bulk of the deposit: the front of 90 % of the mass and the
         # centre of mass's travel, both relative to a0
-        mass = mpmPost.read_cloud_field(run, m["times"][-1], "mass")
+        mass = m["m1"]
         mass0 = mpmPost.read_cloud_field(run, m["times"][0], "mass")
         front90 = (mass_front(m["x1"], mass, 0.9) - m["a0"])/m["a0"]
         travel = (np.dot(mass, m["x1"][:, 0])/mass.sum() - np.dot(mass0, m["x0"][:, 0])/mass0.sum())/m["a0"]

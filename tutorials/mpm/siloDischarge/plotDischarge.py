@@ -202,27 +202,24 @@ def main():
     # The slot resolved (D/h >= 10: C no longer grows with D/h, see the
     # resolution lines below), whatever the cell size: the exponent
     resolved = sorted([r for r in sand if r["D"]/cell(r) >= 10 - 1e-9], key=lambda r: r["D"])
-    resolvedFit = None
-    if len(set(r["D"] for r in resolved)) >= 3:
-        D = np.array([r["D"] for r in resolved]); W = np.array([r["W"] for r in resolved])
+    def exponentFit(group, label):
+        """W ~ D^n (k d = 0) over runs of three widths or more: prints it
+        with each run's C under `label`, returns (n, ln A) or None."""
+        if len(set(r["D"] for r in group)) < 3:
+            return None
+        D = np.array([r["D"] for r in group]); W = np.array([r["W"] for r in group])
         n, lnA = np.polyfit(np.log(D), np.log(W), 1)
         C = W/(RHO*np.sqrt(G)*D**1.5)
-        resolvedFit = (n, lnA)
-        print("resolved slots (D/h >= 10): %s; W ~ D^%.3f (k d = 0); C = %s, mean %.3f"
-              % (" ".join("D = %g (h = %g)" % (r["D"], cell(r)) for r in resolved), n,
+        print("%s: %s; W ~ D^%.3f (k d = 0); C = %s, mean %.3f"
+              % (label, " ".join("D = %g (h = %g)" % (r["D"], cell(r)) for r in group), n,
                  " ".join("%.3f" % c for c in C), C.mean()))
+        return n, lnA
+    resolvedFit = exponentFit(resolved, "resolved slots (D/h >= 10)")
     # One relative resolution D/h for every width: the exponent without the
     # bias of resolving the narrow slots worse than the wide ones
     for ratio in sorted(set(round(r["D"]/cell(r)) for r in sand)):
-        same = sorted([r for r in sand if round(r["D"]/cell(r)) == ratio], key=lambda r: r["D"])
-        if len(set(r["D"] for r in same)) < 3:
-            continue
-        D = np.array([r["D"] for r in same]); W = np.array([r["W"] for r in same])
-        n = np.polyfit(np.log(D), np.log(W), 1)[0]
-        C = W/(RHO*np.sqrt(G)*D**1.5)
-        print("D/h = %d for every width: %s; W ~ D^%.3f (k d = 0); C = %s, mean %.3f"
-              % (ratio, " ".join("D = %g (h = %g)" % (r["D"], cell(r)) for r in same), n,
-                 " ".join("%.3f" % c for c in C), C.mean()))
+        exponentFit(sorted([r for r in sand if round(r["D"]/cell(r)) == ratio], key=lambda r: r["D"]),
+                    "D/h = %d for every width" % ratio)
     for Dv in sorted(set(r["D"] for r in sand)):
         same = sorted([r for r in sand if r["D"] == Dv], key=cell, reverse=True)
         if len(same) > 1:
