@@ -1,0 +1,142 @@
+#!/usr/bin/env python3
+"""Where the column's runout stops converging: the same column at several cell
+sizes, compared phase by phase.
+
+For runs of ./sweepAspectRatio of one material and aspect ratio at
+different h (sweep/<material>_a<a>_h<h>), prints three tables:
+
+1. The failure wedge at t = 0.1 s: on the horizontal line y = h0/4, the speed
+   of the sliding wedge and the width over which the speed rises from 10 %
+   to 90 % of it (the failure zone). A width that shrinks with h (a constant
+   number of cells) would be localisation at the grid scale; a width in
+   metres that stays put is a resolved failure zone.
+2. The spreading layer: the x-velocity averaged over eighths of the depth,
+   base to surface, in the column x in [1.5 a0, 1.7 a0] at two times. A
+   static base under a flowing top, and the thickness of the shear zone
+   between them (u_x from 10 % to 90 % of the surface's, on 32 slices).
+   A rate-independent (or low-I) law has no length of its own to set it.
+3. The front: the 99.9 % mass front and the mean x-velocity of the last 1 %
+   of the mass over time, and the tail's mean deceleration over the 0.25 s
+   after its peak speed. A free layer on the floor decelerates at mu g.
+
+Usage: diagnoseFront.py RUN...   (runs of one material and a, any h)
+"""
+import os
+import re
+import sys
+
+import numpy as np
+
+import mpmPost
+from plotProfile import measure
+
+G = 9.81
+
+
+def floor_friction(run):
+    """The floor's Coulomb coefficient, from the run's constant/mpmProperties."""
+    text = open(os.path.join(run, "constant", "mpmProperties")).read()
+    return float(re.search(r"floor\s*\{[^}]*frictionCoefficient\s+([0-9.eE+-]+)", text).group(1))
+
+
+def cell_size(run):
+    return float(re.search(r"_h([0-9.]+)", os.path.basename(run.rstrip("/"))).group(1))
+
+
+def nearest_time(run, t):
+    ts = mpmPost.times(run)
+    return min(ts, key=lambda s: abs(float(s) - t))
+
+
+def failure_zone(run, t, y, h):
+    """(wedge speed, 10-90 % width) on the line y at time t."""
+    x = mpmPost.read_positions(run, t)
+    u = mpmPost.read_cloud_field(run, t, "U")
+    line = np.abs(x[:, 1] - y) < h/4 + 1e-9
+    order = np.argsort(x[line, 0])
+    xs = x[line, 0][order]
+    speed = np.hypot(u[line, 0], u[line, 1])[order]
+    wedge = np.percentile(speed, 95)
+    return wedge, xs[np.argmax(speed > 0.9*wedge)] - xs[np.argmax(speed > 0.1*wedge)]
+
+
+def layer_profile(run, t, x0, x1, bins=8):
+    """(depth, mean u_x in each of `bins` equal slices of the depth, base up)."""
+    x = mpmPost.read_positions(run, t)
+    u = mpmPost.read_cloud_field(run, t, "U")
+    column = (x[:, 0] >= x0) & (x[:, 0] < x1)
+    depth = x[column, 1].max()
+    k = np.minimum((x[column, 1]/depth*bins).astype(int), bins - 1)
+    ux = u[column, 0]
+    return depth, np.array([ux[k == i].mean() if np.any(k == i) else np.nan for i in range(bins)])
+
+
+def shear_zone(depth, ux):
+    """Thickness over which u_x rises from 10 % to 90 % of the surface's speed
+    (the top slice), the profile taken as monotone from the base."""
+    z = (np.arange(len(ux)) + 0.5)*depth/len(ux)
+    rising = np.maximum.accumulate(np.nan_to_num(ux))
+    top = rising[-1]
+    return np.interp(0.9*top, rising, z) - np.interp(0.1*top, rising, z)
+
+
+def front_history(run):
+    """[(t, 99.9 % front, mean u_x of the last 1 % of the mass)]."""
+    rows = []
+    for t in mpmPost.times(run):
+        x = mpmPost.read_positions(run, t)
+        u = mpmPost.read_cloud_field(run, t, "U")
+        m = mpmPost.read_cloud_field(run, t, "mass")
+        order = np.argsort(x[:, 0])
+        cumulative = np.cumsum(m[order])/m.sum()
+        front = x[order[min(np.searchsorted(cumulative, 0.999), len(order) - 1)], 0]
+        tail = order[cumulative > 0.99]
+        rows.append((float(t), front, u[tail, 0].mean()))
+    return rows
+
+
+def main():
+    runs = sorted(sys.argv[1:], key=cell_size, reverse=True)
+    geometry = {run: measure(run) for run in runs}
+    a0, h0 = geometry[runs[0]]["a0"], geometry[runs[0]]["h0"]
+
+    print("1. Failure wedge at t = 0.1 s on the line y = h0/4 = %.3f m" % (h0/4))
+    print("   %-8s %12s %14s %8s" % ("h [m]", "wedge [m/s]", "10-90 % [m]", "cells"))
+    for run in runs:
+        h = cell_size(run)
+        wedge, width = failure_zone(run, nearest_time(run, 0.1), h0/4, h)
+        print("   %-8g %12.3f %14.4f %8.1f" % (h, wedge, width, width/h))
+
+    x0, x1 = 1.5*a0, 1.7*a0
+    for t in (0.45, 0.55):
+        print("2. Spreading layer, x in [%.2f, %.2f] m, t = %g s: u_x [m/s] by eighths of the depth, base -> surface"
+              % (x0, x1, t))
+        for run in runs:
+            depth, ux = layer_profile(run, nearest_time(run, t), x0, x1)
+            zone = shear_zone(*layer_profile(run, nearest_time(run, t), x0, x1, bins=32))
+            print("   h %-7g depth %.4f m: %s | 10-90 %% shear zone %.4f m = %.1f cells"
+                  % (cell_size(run), depth, " ".join("%6.3f" % v for v in ux), zone, zone/cell_size(run)))
+
+    mu = floor_friction(runs[0])
+    print("3. Front (99.9 %% of the mass) and the last 1 %% of the mass; the floor's mu g = %g g = %.2f m/s^2"
+          % (mu, mu*G))
+    histories = {run: front_history(run) for run in runs}
+    print("   %-6s" % "t [s]" + "".join("   h %-6g front  u_x" % cell_size(r) for r in runs))
+    for i in range(len(histories[runs[0]])):
+        print("   %-6g" % histories[runs[0]][i][0]
+              + "".join("   %13.3f %5.2f" % histories[r][i][1:] for r in runs if i < len(histories[r])))
+    # The tails reach their peak speed at the same time at every h; compare
+    # their deceleration over the same window after it.
+    window = 0.25
+    for run in runs:
+        rows = histories[run]
+        peak = max(range(len(rows)), key=lambda i: rows[i][2])
+        end = min(range(len(rows)), key=lambda i: abs(rows[i][0] - rows[peak][0] - window))
+        decel = (rows[peak][2] - rows[end][2])/(rows[end][0] - rows[peak][0])
+        print("   h %-7g peak tail speed %.3f m/s at t = %g s (front %.3f m); deceleration to t = %g s: %.2f m/s^2"
+              " = %.2f mu g; final runout (L - a0)/a0 = %.3f"
+              % (cell_size(run), rows[peak][2], rows[peak][0], rows[peak][1], rows[end][0], decel, decel/(mu*G),
+                 (geometry[run]["Lf"] - a0)/a0))
+
+if __name__ == "__main__":
+    main()
