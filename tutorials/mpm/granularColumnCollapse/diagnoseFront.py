@@ -72,8 +72,10 @@ def layer_profile(run, t, x0, x1, bins=8):
 
 
 def shear_zone(depth, ux):
-    """Thickness over which u_x rises from 10 % to 90 % of the surface's speed
-    (the top slice), the profile taken as monotone from the base."""
+    """Thickness over which u_x rises from 10 % to 90 % of the flowing top's
+    speed, the profile taken as monotone from the base (its running
+    maximum), so that the top's speed is its fastest slice even where the
+    surface is a little slower than the flow just below it."""
     z = (np.arange(len(ux)) + 0.5)*depth/len(ux)
     rising = np.maximum.accumulate(np.nan_to_num(ux))
     top = rising[-1]

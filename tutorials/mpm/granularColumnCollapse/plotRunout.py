@@ -41,6 +41,16 @@ def run_parameters(run):
             float(m.group(2)), float(m.group(3)))
 
 
+def bulk_measures(x0, mass0, x1, mass1, a0):
+    """The bulk of the deposit, both relative to a0: (front90, travel) with
+    front90 = (L90 - a0)/a0, L90 the x behind which 90 % of the final mass
+    lies, and travel the x displacement of the centre of mass (from the
+    first cloud x0, mass0 to the last x1, mass1) over a0."""
+    front90 = (mass_front(x1, mass1, 0.9) - a0)/a0
+    travel = (np.dot(mass1, x1[:, 0])/mass1.sum() - np.dot(mass0, x0[:, 0])/mass0.sum())/a0
+    return front90, travel
+
+
 def main():
     runs = [r for r in sys.argv[1:] if not r.startswith("--")]
     rows = []
@@ -51,12 +61,8 @@ def main():
         m = measure(run)
         runout = (m["Lf"] - m["a0"])/m["a0"]
         s = mpmPost.read_summary(run)
-        # The bulk of the deposit: the front of 90 % of the mass and the
-        # centre of mass's travel, both relative to a0
-        mass = m["m1"]
-        mass0 = mpmPost.read_cloud_field(run, m["times"][0], "mass")
-        front90 = (mass_front(m["x1"], mass, 0.9) - m["a0"])/m["a0"]
-        travel = (np.dot(mass, m["x1"][:, 0])/mass.sum() - np.dot(mass0, m["x0"][:, 0])/mass0.sum())/m["a0"]
+        front90, travel = bulk_measures(m["x0"], mpmPost.read_cloud_field(run, m["times"][0], "mass"),
+                                        m["x1"], m["m1"], m["a0"])
         rows.append((law, a, h, runout, front90, travel))
         farthest = (m["LfMax"] - m["a0"])/m["a0"]
         print("%-26s %5g %7g %6d %8.3f %8.3f %8.3f %7.3f %10.3g %8s %9.3f %9.4f" % (

@@ -106,7 +106,7 @@ def shapeFunction(case):
 def convergence(cases):
     """C of one slot under refinement, per shape function."""
     runs = [analyse(c) for c in cases]
-    C = lambda r: r["W"]/(RHO*np.sqrt(G)*r["D"]**1.5)
+    C = lambda r: float(beverlooC(r["D"], r["W"]))
     cell = lambda r: r["D"]/slotCells(r["case"])
     print("rho %g, g %g; steady window t >= 0.4 s while H >= 2 D" % (RHO, G))
     print("%-16s %6s %7s %5s %9s %7s %9s %8s" % ("shape", "D", "h", "D/h", "W", "C", "halving", "clamped"))
@@ -143,6 +143,27 @@ def convergence(cases):
     fig.tight_layout(); fig.savefig("convergence.png", dpi=120)
 
 
+def beverlooC(D, W, delta=0.0):
+    """Beverloo's constant of each run: C = W/(rho sqrt(g) (D - delta)^1.5)."""
+    return np.asarray(W)/(RHO*np.sqrt(G)*(np.asarray(D) - delta)**1.5)
+
+
+def exponentFit(D, W, delta=0.0):
+    """Least squares of log W on log (D - delta): (n, ln A, squared residual)
+    of W = A (D - delta)^n."""
+    (n, lnA), res = np.polyfit(np.log(np.asarray(D) - delta), np.log(W), 1, full=True)[:2]
+    return n, lnA, float(res[0]) if len(res) else 0.0
+
+
+def excludedWidthFit(D, W, steps=981):
+    """Beverloo's excluded width k d = delta in [0, 0.98 min D] (steps
+    values) of least residual in exponentFit: (n, ln A, delta)."""
+    best = min(((exponentFit(D, W, delta), delta) for delta in np.linspace(0, 0.98*np.min(D), steps)),
+               key=lambda fit: fit[0][2])
+    (n, lnA, _), delta = best
+    return n, lnA, delta
+
+
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     if "--convergence" in sys.argv:
@@ -157,13 +178,16 @@ def main():
             runs.append(analyse(c, hmin=0 if fluid(c) else 2))
         except (IndexError, ValueError):
             print("%s: no steady window yet (a run not past t = 0.4 s), left out" % c)
+    if not runs:
+        sys.exit("plotDischarge.py: no finished run among %s (a run directory has postProcessing/openBoundaries)"
+                 % (" ".join(args) or "runs/*"))
     sand = sorted([r for r in runs if not fluid(r["case"])], key=lambda r: r["D"])
     water = [r for r in runs if fluid(r["case"])]
     print("rho %g, g %g; rates per unit thickness [kg/(m s)]; H: mean fill height [m]" % (RHO, G))
     print("%-22s %6s %9s %9s %9s %8s %8s %8s %8s %8s" % ("run", "D", "W", "W 1st", "W 2nd", "H 1st", "H 2nd",
                                                           "change", "C", "clamped"))
     for r in sand + water:
-        C = r["W"]/(RHO*np.sqrt(G)*r["D"]**1.5)
+        C = float(beverlooC(r["D"], r["W"]))
         print("%-22s %6.3f %9.4g %9.4g %9.4g %8.3f %8.3f %+7.1f%% %8.3f %8d" % (
             os.path.basename(r["case"]), r["D"], r["W"], r["Wa"], r["Wb"], r["Ha"], r["Hb"],
             100*(r["Wb"]/r["Wa"] - 1), C, r["clamped"]))
@@ -178,23 +202,17 @@ def main():
     for h in sorted(set(cell(r) for r in sand), reverse=True):
         group = [r for r in sand if cell(r) == h]
         D = np.array([r["D"] for r in group]); W = np.array([r["W"] for r in group])
-        C = W/(RHO*np.sqrt(G)*D**1.5)
+        C = beverlooC(D, W)
         print("cell h = %g m: D/h = %s, C = W/(rho sqrt(g) D^1.5) = %s"
               % (h, " ".join("%.0f" % x for x in D/h), " ".join("%.3f" % c for c in C)))
         if len(group) < 3:
             continue
-        n, lnA = np.polyfit(np.log(D), np.log(W), 1)
+        n, lnA, _ = exponentFit(D, W)
         print("    Beverloo, k d = 0: W ~ D^%.3f (expected 3/2)" % n)
         # With an excluded width delta (Beverloo's k d): the exponent fitted
         # for each delta, the delta of least residual
-        best = None
-        for delta in np.linspace(0, 0.98*D.min(), 981):
-            coef, res = np.polyfit(np.log(D - delta), np.log(W), 1, full=True)[:2]
-            r2 = float(res[0]) if len(res) else 0.0
-            if best is None or r2 < best[0]:
-                best = (r2, coef[0], coef[1], delta)
-        _, nd, lnAd, delta = best
-        Cd = W/(RHO*np.sqrt(G)*(D - delta)**1.5)
+        nd, lnAd, delta = excludedWidthFit(D, W)
+        Cd = beverlooC(D, W, delta)
         print("    Beverloo, k d fitted: delta = %.4f m = %.2f h; W ~ (D - delta)^%.3f; "
               "C = W/(rho sqrt(g) (D - delta)^1.5) = %s, mean %.3f"
               % (delta, delta/h, nd, " ".join("%.3f" % c for c in Cd), Cd.mean()))
@@ -202,29 +220,29 @@ def main():
     # The slot resolved (D/h >= 10: C no longer grows with D/h, see the
     # resolution lines below), whatever the cell size: the exponent
     resolved = sorted([r for r in sand if r["D"]/cell(r) >= 10 - 1e-9], key=lambda r: r["D"])
-    def exponentFit(group, label):
+    def printExponentFit(group, label):
         """W ~ D^n (k d = 0) over runs of three widths or more: prints it
         with each run's C under `label`, returns (n, ln A) or None."""
         if len(set(r["D"] for r in group)) < 3:
             return None
         D = np.array([r["D"] for r in group]); W = np.array([r["W"] for r in group])
-        n, lnA = np.polyfit(np.log(D), np.log(W), 1)
-        C = W/(RHO*np.sqrt(G)*D**1.5)
+        n, lnA, _ = exponentFit(D, W)
+        C = beverlooC(D, W)
         print("%s: %s; W ~ D^%.3f (k d = 0); C = %s, mean %.3f"
               % (label, " ".join("D = %g (h = %g)" % (r["D"], cell(r)) for r in group), n,
                  " ".join("%.3f" % c for c in C), C.mean()))
         return n, lnA
-    resolvedFit = exponentFit(resolved, "resolved slots (D/h >= 10)")
+    resolvedFit = printExponentFit(resolved, "resolved slots (D/h >= 10)")
     # One relative resolution D/h for every width: the exponent without the
     # bias of resolving the narrow slots worse than the wide ones
     for ratio in sorted(set(round(r["D"]/cell(r)) for r in sand)):
-        exponentFit(sorted([r for r in sand if round(r["D"]/cell(r)) == ratio], key=lambda r: r["D"]),
+        printExponentFit(sorted([r for r in sand if round(r["D"]/cell(r)) == ratio], key=lambda r: r["D"]),
                     "D/h = %d for every width" % ratio)
     for Dv in sorted(set(r["D"] for r in sand)):
         same = sorted([r for r in sand if r["D"] == Dv], key=cell, reverse=True)
         if len(same) > 1:
             print("resolution, D = %g: %s" % (Dv, "; ".join(
-                "h = %g (D/h = %.0f) C = %.3f" % (cell(r), r["D"]/cell(r), r["W"]/(RHO*np.sqrt(G)*Dv**1.5))
+                "h = %g (D/h = %.0f) C = %.3f" % (cell(r), r["D"]/cell(r), float(beverlooC(Dv, r["W"])))
                 for r in same)))
     print("max |mass balance error|/initial mass over the runs: %.2g" % max(r["balance"] for r in runs))
     if "--no-plot" in sys.argv:

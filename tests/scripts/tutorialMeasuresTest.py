@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""The measures the tutorials' scripts report, on made-up data whose answer
+is known: the column's fronts and bulk measures (plotProfile.py,
+plotRunout.py), the spreading layer's shear zone (diagnoseFront.py) and the
+silo's Beverloo fits (plotDischarge.py). The case tests check the runs; these
+check that the numbers printed from them measure what they say."""
+import os
+import sys
+import unittest
+
+import numpy as np
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path[:0] = [os.path.join(ROOT, "etc", "python"),
+                os.path.join(ROOT, "tutorials", "mpm", "granularColumnCollapse"),
+                os.path.join(ROOT, "tutorials", "mpm", "siloDischarge")]
+
+import diagnoseFront   # noqa: E402
+import plotDischarge   # noqa: E402
+import plotProfile     # noqa: E402
+import plotRunout      # noqa: E402
+
+
+def cloud(xs, ys=None):
+    xs = np.asarray(xs, dtype=float)
+    return np.column_stack([xs, np.zeros_like(xs) if ys is None else ys, np.zeros_like(xs)])
+
+
+class ColumnFronts(unittest.TestCase):
+    def test_front_ignores_a_light_point_thrown_ahead(self):
+        # 1000 points of mass 1 in [0, 1), one of mass 0.5 at x = 10: the
+        # 99.9 % front stays in the deposit, the farthest point does not
+        x = cloud(list(np.linspace(0, 0.999, 1000)) + [10.0])
+        m = np.array([1.0]*1000 + [0.5])
+        front = plotProfile.mass_front(x, m)
+        self.assertLess(front, 1.0)
+        self.assertGreater(front, 0.99)
+
+    def test_front_follows_the_mass_not_the_count(self):
+        # nine light points behind one that holds 91 % of the mass: 90 % of
+        # the mass lies behind the heavy point only
+        x = cloud(np.arange(10.0))
+        m = np.array([1.0]*9 + [91.0])
+        self.assertEqual(plotProfile.mass_front(x, m, 0.9), 9.0)
+        self.assertEqual(plotProfile.mass_front(x, np.ones(10), 0.5), 4.0)
+
+    def test_travel_is_the_mass_weighted_displacement(self):
+        x0 = cloud([0.0, 0.1, 0.2])
+        m = np.array([1.0, 1.0, 2.0])
+        a0 = 0.2
+        # everything moves by 0.3: travel 0.3/a0, front90 from 0.2 to 0.5
+        front90, travel = plotRunout.bulk_measures(x0, m, x0 + [0.3, 0, 0], m, a0)
+        self.assertAlmostEqual(travel, 1.5, places=12)
+        self.assertAlmostEqual(front90, (0.5 - a0)/a0, places=12)
+        # only the heavy point moves by 0.4: the centre of mass by 0.4*2/4
+        x1 = x0.copy()
+        x1[2, 0] += 0.4
+        self.assertAlmostEqual(plotRunout.bulk_measures(x0, m, x1, m, a0)[1], 0.2/a0, places=12)
+
+    def test_run_names(self):
+        self.assertEqual(plotRunout.run_parameters("sweep/sand_a2_h0.005"), ("sand", 2.0, 0.005))
+        self.assertEqual(plotRunout.run_parameters("sweep/glassBeads_a0.5_h0.01_E2e5_geostatic_FLIP/"),
+                         ("glassBeads_E2e5_geostatic_FLIP", 0.5, 0.01))
+
+    def test_lube_law(self):
+        self.assertAlmostEqual(plotRunout.lube(2.0), 2.4)
+        self.assertAlmostEqual(plotRunout.lube(8.0), 1.9*4.0)
+
+
+class ShearZone(unittest.TestCase):
+    def profile(self, z1, z2, U=1.0, depth=0.1, bins=400):
+        """A static base below z1, a plug at U above z2, linear between."""
+        z = (np.arange(bins) + 0.5)*depth/bins
+        return depth, U*np.clip((z - z1)/(z2 - z1), 0, 1)
+
+    def test_width_of_a_linear_band(self):
+        depth, ux = self.profile(0.03, 0.07)
+        self.assertAlmostEqual(diagnoseFront.shear_zone(depth, ux), 0.8*0.04, delta=depth/400)
+
+    def test_width_scales_with_the_band_not_the_depth(self):
+        thin = diagnoseFront.shear_zone(*self.profile(0.05, 0.06))
+        thick = diagnoseFront.shear_zone(*self.profile(0.02, 0.08))
+        self.assertAlmostEqual(thick/thin, 6.0, delta=0.1)
+
+    def test_a_slower_surface_does_not_move_the_band(self):
+        depth, ux = self.profile(0.03, 0.07)
+        z = (np.arange(len(ux)) + 0.5)*depth/len(ux)
+        top = z > 0.08
+        ux[top] = 1.0 - 2.0*(z[top] - 0.08)/0.02*0.1   # down to 0.8 at the surface
+        self.assertAlmostEqual(diagnoseFront.shear_zone(depth, ux), 0.8*0.04, delta=depth/400)
+
+    def test_a_dip_below_the_band_does_not_shorten_it(self):
+        depth, ux = self.profile(0.03, 0.07)
+        ux[:20] = -0.2          # the base sliding back a little
+        self.assertAlmostEqual(diagnoseFront.shear_zone(depth, ux), 0.8*0.04, delta=depth/400)
+
+
+class Beverloo(unittest.TestCase):
+    D = np.array([0.04, 0.06, 0.08, 0.12, 0.16])
+
+    def rates(self, C, delta, n=1.5):
+        return C*plotDischarge.RHO*np.sqrt(plotDischarge.G)*(self.D - delta)**n
+
+    def test_constant_and_exponent_of_an_exact_law(self):
+        W = self.rates(1.03, 0.0)
+        np.testing.assert_allclose(plotDischarge.beverlooC(self.D, W), 1.03, rtol=1e-12)
+        n, lnA, residual = plotDischarge.exponentFit(self.D, W)
+        self.assertAlmostEqual(n, 1.5, places=10)
+        self.assertAlmostEqual(np.exp(lnA), 1.03*plotDischarge.RHO*np.sqrt(plotDischarge.G), places=6)
+        self.assertLess(residual, 1e-20)
+
+    def test_other_exponent_is_measured_not_assumed(self):
+        self.assertAlmostEqual(plotDischarge.exponentFit(self.D, self.rates(1.0, 0.0, n=1.7))[0], 1.7, places=10)
+
+    def test_excluded_width_is_recovered(self):
+        W = self.rates(1.2, 0.012)
+        # without it the exponent is biased upwards ...
+        self.assertGreater(plotDischarge.exponentFit(self.D, W)[0], 1.6)
+        # ... with it the law is found again, to the scan's step
+        n, lnA, delta = plotDischarge.excludedWidthFit(self.D, W)
+        step = 0.98*self.D.min()/980
+        self.assertAlmostEqual(delta, 0.012, delta=step)
+        self.assertAlmostEqual(n, 1.5, delta=0.01)
+        np.testing.assert_allclose(plotDischarge.beverlooC(self.D, W, delta), 1.2, rtol=0.01)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
