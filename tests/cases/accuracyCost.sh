@@ -130,7 +130,7 @@ check "unreachable target: exit status 2" "rc == 2" rc="$?"
 # 5. the end-of-run log quotes the front
 sed -i 's/^massMatrix .*/massMatrix      consistent;/' "$c/constant/mpmProperties"
 sed -i 's/courant .*;/courant     0.5;/' "$c/constant/mpmProperties"
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+runApps "$c" blockMesh mpmSetParticles mpmFoam \
     || { echo "FAIL: run"; failures=$((failures + 1)); }
 line=$(grep "Expected error" "$c/log.mpmFoam"); echo "$line"
 quoted=$(echo "$line" | sed -n 's/.*Expected error: \([0-9.eE+-]*\) .*/\1/p')

@@ -35,8 +35,7 @@ runBar()     # case nBarCells massMatrix
     local c="$1" n="$2" mass="$3"
     sed -i "s/^nCells .*/nCells  $((n*6/5));/" "$c/system/blockMeshDict"
     sed -i "s/^massMatrix .*/massMatrix      $mass;/" "$c/constant/mpmProperties"
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-        && mpmFoam > log.mpmFoam 2>&1) || { echo "run failed in $c"; tail -20 "$c/log.mpmFoam"; }
+    runApps "$c" blockMesh mpmSetParticles mpmFoam || { echo "run failed in $c"; tail -20 "$c/log.mpmFoam"; }
 }
 
 # 1. Tutorial as shipped

@@ -21,7 +21,7 @@ for n in 25 100; do
     sed -i "s/^deltaT .*/deltaT          $dt;/" "$c/system/controlDict"
     sed -i "s/^flipRatio .*/flipRatio       0;/; s/^massMatrix .*/massMatrix      lumped;/; s/type        adaptive;/type        fixed;/" \
         "$c/constant/mpmProperties"
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles mpmFoam \
         || { echo "FAIL: run $c"; failures=$((failures + 1)); continue; }
     "$tool" --model wave --shape CBS --alpha 0 --scheme USL --offsets 0.25,0.75 --CFL 0.5 --nk $((2*n)) \
         --csv "$c/G.csv" > /dev/null

@@ -32,7 +32,7 @@ for n in 48 96 48c; do
         resizeColumn "$c" 0.12 "$n" 0.1 > /dev/null
         "$PY" "$c/hydrostaticPressure.py" "$c"   # hydrostatic initial p on the finer mesh
     fi
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles mpmFoam \
         || { echo "FAIL: run ($n cells)"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
     out=$(cd "$c" && "$PY" plotConsolidation.py --no-plot) || { echo "$out"; failures=$((failures + 1)); continue; }
     echo "$out" | sed "s/^/[$n cells] /"

@@ -30,8 +30,7 @@ runCheck()
     sed -i "s/^\( *solidFraction \+\).*/\1$aS;/; s/amplitude  (0 1e-9 0)/amplitude  (0 $amp 0)/" "$c/system/mpmSetParticlesDict"
     sed -i "s/^deltaT .*/deltaT          $2;/; s/^endTime .*/endTime         $("$PY" -c "print($steps*$2)");/" \
         "$c/system/controlDict"
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-        && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: run $c"; failures=$((failures + 1)); return; }
+    runApps "$c" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: run $c"; failures=$((failures + 1)); return; }
     if "$PY" "$c/compareWithAnalysis.py" "$c" "$tool" --tol 1e-6 --fluid-tol 1e-5 > "$c/log.compare" 2>&1; then
         echo "PASS: $1 deltaT=$2 subCycles=$3 flipRatio=$4 $response aS=$aS d=$d: $(grep 'largest' "$c/log.compare")"
     else

@@ -103,8 +103,7 @@ for delta in 0.0025 0.01 0.04; do
     sed -i -e 's/^\( *material \).*;/\1 sand;/' -e "s/^\( *max \).*;/\1          (0.02 $delta 0.005);/" \
         -e 's/value (0 0 0);/value (1 0 0);/' "$c/system/mpmSetParticlesDict"
     sed -i -e 's/^endTime .*/endTime 0.15;/' -e 's/^writeInterval .*/writeInterval 0.05;/' "$c/system/controlDict"
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-        && mpmFoam > log.mpmFoam 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles mpmFoam \
         || { echo "FAIL: run slide, layer $delta m"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
     u=$(meanVelocity "$c")
     ratio=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u0 - u1)/(t1 - t0)/(0.45*9.81)}')

@@ -17,7 +17,7 @@
 . "$(dirname "$0")/caseTestFunctions"
 
 c=$(copyTutorial multiphase/packedBed packedBed)
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) || { echo "FAIL: set-up"; exit 1; }
+runApps "$c" blockMesh mpmSetParticles || { echo "FAIL: set-up"; exit 1; }
 sed -i 's/^endTime .*/endTime 0.2;/; s/^writeInterval .*/writeInterval 0.2;/' "$c/system/controlDict"
 d=$(cp -r "$c" "$SCRATCH/fewer" && echo "$SCRATCH/fewer")
 sed -i 's/^logInterval .*/logInterval 1;\ndiagnostics (summary materialTotals);/' "$(props "$c")"

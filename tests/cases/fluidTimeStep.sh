@@ -15,7 +15,7 @@ setup()
 {
     local c; c=$(copyTutorial "$1" "$2")
     sed -i "$3" "$c/system/controlDict"
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles \
         || { echo "FAIL: set-up $2"; failures=$((failures + 1)); }
     echo "$c"
 }

@@ -30,8 +30,7 @@
 
 c=$(copyTutorial multiphase/fluidisedBed fluidisedBed)
 start=$(date +%s)
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-    && mpmFoam > log.mpmFoam 2>&1) || { echo "run failed in $c"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); finish; }
+runApps "$c" blockMesh mpmSetParticles mpmFoam || { echo "run failed in $c"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); finish; }
 echo "fluidisedBed: mpmFoam ran in $(( $(date +%s) - start )) s"
 
 out=$(cd "$c" && "$PY" plotFluidisedBed.py --no-plot) || { echo "$out"; failures=$((failures + 1)); finish; }

@@ -47,7 +47,7 @@ timeStep { type adaptive; courant 0.5; }
 materials { soil { model linearElastic; rho 1000; E 1e6; nu 0.25; } }
 walls { floor { type slip; } sides { type slip; } }
 DEOF
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+runApps "$c" blockMesh mpmSetParticles mpmFoam \
     || { echo "FAIL: run"; tail -20 "$c/log.mpmFoam"; exit 1; }
 grep -A7 "MPM summary" "$c/log.mpmFoam"
 read -r err ratio < <("$PY" - "$c" <<'PYEOF'

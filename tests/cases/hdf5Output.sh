@@ -37,7 +37,7 @@ prepare()
 {
     cp -r "$CASES/block3D" "$1"
     echo "pointOutput $2;" >> "$1/constant/mpmProperties"
-    (cd "$1" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+    runApps "$1" blockMesh mpmSetParticles \
         || { echo "FAIL: setting up $1"; failures=$((failures + 1)); }
 }
 run() { (cd "$1" && shift && "$@" > log.run 2>&1) || { echo "FAIL: $* in $1"; tail -20 "$1/log.run"; failures=$((failures + 1)); }; }
@@ -196,7 +196,7 @@ sed -i "s/^endTime .*/endTime 0.04;/; s/^writeInterval .*/writeInterval 0.02;/; 
 grep -q "^writePrecision" "$coupled/system/controlDict" || echo "writePrecision 17;" >> "$coupled/system/controlDict"
 sed -i 's/tolerance 1e-10; relTol 0.01;/tolerance 1e-14; relTol 0;/; s/tolerance 1e-10; relTol 0;/tolerance 1e-14; relTol 0;/' "$coupled/system/fvSolution"
 echo "pointOutput hdf5;" >> "$coupled/constant/mpmProperties"
-(cd "$coupled" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1)
+runApps "$coupled" blockMesh mpmSetParticles
 run "$coupled" mpmFoam
 read -r nf dmax <<< "$("$PY" - "$coupled" 0.04 <<'PYEOF'
 import sys

@@ -27,7 +27,7 @@ regions
 DEOF
 sed -i 's/type        adaptive;/type        fixed;/' "$(props "$c")"
 sed -i 's/^deltaT .*/deltaT 0.0025;/; s/^endTime .*/endTime 0.1;/; s/^writeInterval .*/writeInterval 0.01;/' "$c/system/controlDict"
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) || { echo "FAIL: set-up"; exit 1; }
+runApps "$c" blockMesh mpmSetParticles || { echo "FAIL: set-up"; exit 1; }
 
 expectFailure "impact: a point at J <= 0 stops the run with step, point and material" \
     "Stopping at time [0-9.e-]+, step [0-9]+: material point id [0-9]+ \(material disk\) is compressed to zero volume or below: J = -" \

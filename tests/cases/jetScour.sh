@@ -15,7 +15,7 @@
 . "$(dirname "$0")/caseTestFunctions"
 
 c=$(copyTutorial multiphase/jetScour jet)
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+runApps "$c" blockMesh mpmSetParticles mpmFoam \
     || { echo "FAIL: run"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); finish; }
 out=$(cd "$c" && "$PY" plotJetScour.py --no-plot) || { echo "$out"; failures=$((failures + 1)); finish; }
 echo "$out"

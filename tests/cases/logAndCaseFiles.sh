@@ -12,7 +12,7 @@
 . "$(dirname "$0")/caseTestFunctions"
 
 c=$(copyTutorial multiphase/packedBed packedBed)
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) || { echo "FAIL: set-up"; exit 1; }
+runApps "$c" blockMesh mpmSetParticles || { echo "FAIL: set-up"; exit 1; }
 # 20 fluid steps, no write time inside; the annotated coupled files
 sed -i 's/^endTime .*/endTime 0.4;/' "$c/system/controlDict"
 cp "$MPMFOAM_ROOT/etc/caseDicts/coupled/fvSchemes" "$MPMFOAM_ROOT/etc/caseDicts/coupled/fvSolution" "$c/system/"
@@ -39,7 +39,7 @@ fi
 p=$(copyTutorial mpm/axialBar axialBar)
 cp "$MPMFOAM_ROOT/etc/caseDicts/mpm/fvSchemes" "$MPMFOAM_ROOT/etc/caseDicts/mpm/fvSolution" "$p/system/"
 sed -i 's/^endTime .*/endTime 5;/' "$p/system/controlDict"
-if (cd "$p" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+if runApps "$p" blockMesh mpmSetParticles mpmFoam \
     && grep -q "^Progress: time 5 of 5, 100 % done" "$p/log.mpmFoam"; then
     echo "PASS: pure MPM runs with etc/caseDicts/mpm/fvSchemes and fvSolution, and logs its progress"
 else

@@ -35,7 +35,7 @@ for dt in 2e-3 5e-4; do
     c="$SCRATCH/dt$dt"
     cp -r "$caseSrc" "$c"
     sed -i "s/^deltaT .*/deltaT          $dt;/" "$c/system/controlDict"
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles \
         || { echo "FAIL: set-up ($dt)"; failures=$((failures + 1)); continue; }
     # The water's initial return flow U = -aS v0/(1 - aS), with aS the cubic
     # B-spline projection of the grain volumes (as the solver projects it)

@@ -29,8 +29,7 @@ sed -i 's/min           (0 0.05 0);/min (0 0.002 0);/; s/max           (0.001 0.
 sed -i 's/^endTime .*/endTime 0.6;/; s/^writeInterval .*/writeInterval 0.1;/' "$c/system/controlDict"
 p="$SCRATCH/coupledOutletParallel"
 cp -r "$c" "$p"
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-    && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: coupled outlet run"; tail -20 "$c/log.mpmFoam"; exit 1; }
+runApps "$c" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: coupled outlet run"; tail -20 "$c/log.mpmFoam"; exit 1; }
 
 res=$("$PY" - "$c" <<'PYEOF'
 import sys
@@ -66,7 +65,7 @@ check "coupled: the cloud settles as one through the outlet (spread of displacem
 check "coupled: the points removed are those with y0 < s at every written time" "bad == 0" bad="$badCount"
 
 # 2 processors against serial
-(cd "$p" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) || { echo "FAIL: parallel set-up"; exit 1; }
+runApps "$p" blockMesh mpmSetParticles || { echo "FAIL: parallel set-up"; exit 1; }
 decomposeCase "$p" 2 simple "n (1 2 1);"
 (cd "$p" && mpirun -np 2 mpmFoam -parallel > log.mpmFoam 2>&1) || { echo "FAIL: mpirun -np 2 (coupled)"; tail -20 "$p/log.mpmFoam"; exit 1; }
 bad=$("$PY" - "$c" "$p" <<'PYEOF'

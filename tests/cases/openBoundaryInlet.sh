@@ -25,8 +25,7 @@
 CASES="$MPMFOAM_ROOT/tests/cases/openBoundaryCases"
 c="$SCRATCH/inletStream"
 cp -r "$CASES/inletStream" "$c"
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-    && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: inletStream run"; tail -20 "$c/log.mpmFoam"; exit 1; }
+runApps "$c" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: inletStream run"; tail -20 "$c/log.mpmFoam"; exit 1; }
 
 res=$("$PY" - "$c" <<'PYEOF'
 import sys

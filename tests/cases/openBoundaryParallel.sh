@@ -48,12 +48,11 @@ for spec in "outletFall 0.16 bottom" "inletStream 0.6 top bottom"; do
     echo "=== $case"
     serial="$SCRATCH/$case.serial"
     cp -r "$CASES/$case" "$serial"
-    (cd "$serial" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-        && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: serial $case"; failures=$((failures + 1)); continue; }
+    runApps "$serial" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: serial $case"; failures=$((failures + 1)); continue; }
     for split in "1 2 1" "2 1 1"; do
         par="$SCRATCH/$case.${split// /}"
         cp -r "$CASES/$case" "$par"
-        (cd "$par" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+        runApps "$par" blockMesh mpmSetParticles \
             || { echo "FAIL: setting up $par"; failures=$((failures + 1)); continue; }
         decomposeCase "$par" 2 simple "n ($split);"
         (cd "$par" && mpirun -np 2 mpmFoam -parallel > log.mpmFoam 2>&1) \

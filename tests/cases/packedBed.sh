@@ -28,7 +28,7 @@ for n in 40 80 160; do
     if [ "$n" != 80 ]; then
         resizeColumn "$c" 0.2 "$n" 0.1 > /dev/null
     fi
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles mpmFoam \
         || { echo "FAIL: run ($n cells)"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
     (cd "$c" && "$PY" plotPackedBed.py --no-plot) | sed "s/^packedBed:/packedBed ($n cells):/" | tee "$c/log.plot"
     ratio=$(sed -n 's/.*inside the bed .* ratio \([0-9.e+-]*\).*/\1/p' "$c/log.plot")

@@ -35,7 +35,7 @@ tol=1e-10
 prepare()
 {
     cp -r "$CASES/$1" "$2"
-    (cd "$2" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+    runApps "$2" blockMesh mpmSetParticles \
         || { echo "FAIL: setting up $1"; failures=$((failures + 1)); }
 }
 
@@ -163,7 +163,7 @@ parity "re-decomposed restart vs serial" "$serial" "$rebal" "$tEnd"
 
 seeded="$SCRATCH/block3D.seedParallel"
 cp -r "$CASES/block3D" "$seeded"
-(cd "$seeded" && blockMesh > log.blockMesh 2>&1)
+runApps "$seeded" blockMesh
 decomposeCase "$seeded" 3 scotch
 (cd "$seeded" && mpirun -np 3 mpmSetParticles -parallel > log.mpmSetParticles 2>&1) \
     || { echo "FAIL: mpmSetParticles -parallel"; tail -20 "$seeded/log.mpmSetParticles"; failures=$((failures + 1)); }

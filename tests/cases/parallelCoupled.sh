@@ -30,7 +30,7 @@ setup()
     if [ "$2" = tight ]; then
         sed -i 's/tolerance 1e-10; relTol 0.01;/tolerance 1e-14; relTol 0;/; s/tolerance 1e-10; relTol 0;/tolerance 1e-14; relTol 0;/' "$c/system/fvSolution"
     fi
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles \
         || { echo "FAIL: set-up"; failures=$((failures + 1)); }
 }
 
@@ -97,7 +97,7 @@ per="$SCRATCH/periodicSerial"; perP="$SCRATCH/periodicParallel"
 cp -r "$MPMFOAM_ROOT/tests/cases/periodicSuspensionCase" "$per"
 sed -i 's/tolerance *1e-[0-9]*; *relTol *[0-9.]*;/tolerance 1e-14; relTol 0;/g' "$per/system/fvSolution"
 sed -i 's/^writePrecision .*/writePrecision  17;/' "$per/system/controlDict"
-(cd "$per" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1) \
+runApps "$per" blockMesh mpmSetParticles \
     || { echo "FAIL: periodic set-up"; failures=$((failures + 1)); }
 cp -r "$per" "$perP"
 (cd "$per" && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: periodic serial"; failures=$((failures + 1)); }

@@ -8,7 +8,7 @@
 
 c=$(copyTutorial mpm/granularColumnCollapse post)
 sed -i "s/^endTime .*/endTime         0.05;/; s/^writeInterval .*/writeInterval   0.05;/" "$c/system/controlDict"
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+runApps "$c" blockMesh mpmSetParticles mpmFoam \
     || { echo "FAIL: run"; tail -20 "$c/log.mpmFoam"; exit 1; }
 last=$(cd "$c" && ls -d [0-9]* | sort -g | tail -1)
 n=$(sed -n 's/^Material points: \([0-9]*\).*/\1/p' "$c/log.mpmFoam")

@@ -64,7 +64,7 @@ v = mpmPost.read_cloud_field('$c', '0', 'volume'); U = mpmPost.read_cloud_field(
 ok = np.allclose(U, [1, 2, 3]) and np.allclose(s[:, 0], -5) and np.allclose(s[:, 5], -5)
 print(v.sum(), 1 if ok else 0)"
 }
-(cd "$c" && blockMesh > log.blockMesh 2>&1) || { echo "FAIL: blockMesh"; exit 1; }
+runApps "$c" blockMesh || { echo "FAIL: blockMesh"; exit 1; }
 
 read -r vol ok < <(seedCase "type sphere; centre (0.3 0.3 0.3); radius 0.2;" sphere)
 check "sphere: seeded volume 4/3 pi r^3 within 2 %" "abs(v/(4/3*3.141592653589793*0.2**3) - 1) <= 0.02" v="$vol"

@@ -37,7 +37,7 @@ for variant in base virtualMass; do
         grep -q "virtualMass" "$c/constant/mpmProperties" || { echo "FAIL: could not add virtualMass"; failures=$((failures + 1)); }
     fi
     start=$(date +%s)
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles mpmFoam \
         || { echo "FAIL: run ($variant)"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); }
     echo "settlingSuspension ($variant): mpmFoam run $(( $(date +%s) - start )) s"
 

@@ -16,7 +16,7 @@ runCheck()   # shape alpha scheme CFL
     sed -i "s/^shapeFunction .*/shapeFunction   $1;/; s/^flipRatio .*/flipRatio       $2;/; s/^stressUpdate .*/stressUpdate    $3;/" \
         "$c/constant/mpmProperties"
     sed -i "s/^deltaT .*/deltaT          $4;/; s/^endTime .*/endTime         $("$PY" -c "print(40*$4)");/" "$c/system/controlDict"
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+    runApps "$c" blockMesh mpmSetParticles mpmFoam \
         || { echo "FAIL: run $c"; failures=$((failures + 1)); return; }
     if "$PY" "$c/compareWithAnalysis.py" "$c" "$tool" --tol 1e-6; then
         echo "PASS: $1 alpha=$2 $3 CFL=$4"

@@ -81,8 +81,7 @@ newCase()
 
 runCase()   # case -> 0 on success
 {
-    (cd "$1" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 \
-        && mpmFoam > log.mpmFoam 2>&1)
+    runApps "$1" blockMesh mpmSetParticles mpmFoam
 }
 
 # measure <case> <endTime> -> "UcmY Ufluid spread UfReturn UfExpected"

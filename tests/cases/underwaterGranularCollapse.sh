@@ -10,9 +10,9 @@
 
 c=$(copyTutorial multiphase/underwaterGranularCollapse wet)
 d=$(copyTutorial mpm/granularColumnCollapse dry)
-(cd "$c" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+runApps "$c" blockMesh mpmSetParticles mpmFoam \
     || { echo "FAIL: underwater run"; tail -20 "$c/log.mpmFoam"; exit 1; }
-(cd "$d" && blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
+runApps "$d" blockMesh mpmSetParticles mpmFoam \
     || { echo "FAIL: dry run"; exit 1; }
 (cd "$c" && "$PY" plotUnderwater.py . "$d" --no-plot) | tee "$c/log.plot"
 ratio=$(sed -n 's/.*runout ratio = \([0-9.]*\).*/\1/p' "$c/log.plot")
