@@ -38,19 +38,19 @@ defect()
 u=5/lagrangian/materialPoints
 defect nanInCloud "no NaN/inf in any written file" "" "sed -i '0,/^(\([-0-9.e]*\) /s//(nan /' $u/U"
 defect infInLog "no NaN/inf in the solver log" "" "sed -i '0,/kinetic energy [-0-9.e]*,/s//kinetic energy inf,/' log.mpmFoam"
-defect missingPoint "holds the seeded" "" "python3 - <<'P'
+defect missingPoint "holds the seeded" "" "$PY - <<'P'
 import re
 for f in ['pointId', 'mass']:
     p = '$u/' + f; s = open(p).read()
     s = re.sub(r'\n50\n\(\n([^\n]*\n)', r'\n49\n(\n', s, count=1); open(p, 'w').write(s)
 P"
-defect duplicatePoint "each id once" "" "python3 - <<'P'
+defect duplicatePoint "each id once" "" "$PY - <<'P'
 import re
 p = '$u/pointId'; s = open(p).read()
 m = re.search(r'\n50\n\(\n([^\n]*)\n([^\n]*)\n', s)
 s = s[:m.start(2)] + m.group(1) + s[m.end(2):]; open(p, 'w').write(s)
 P"
-defect massChanged "keeps its seeded mass" "" "python3 - <<'P'
+defect massChanged "keeps its seeded mass" "" "$PY - <<'P'
 import re
 p = '$u/mass'; s = open(p).read()
 m = re.search(r'\n(\d+)\{([^}]*)\}', s)     # all equal: N{value}
@@ -58,7 +58,7 @@ n, v = int(m.group(1)), float(m.group(2))
 body = '\n%d\n(\n%s\n%s\n)' % (n, repr(v*(1 + 1e-12)), '\n'.join([repr(v)]*(n - 1)))
 open(p, 'w').write(s[:m.start()] + body + s[m.end():])
 P"
-defect energyGrowth "energy grows by" "--energy-growth 1e-2" "python3 - <<'P'
+defect energyGrowth "energy grows by" "--energy-growth 1e-2" "$PY - <<'P'
 import glob
 p = glob.glob('postProcessing/mpmSummary/*/summary.dat')[0]
 rows = open(p).read().splitlines()
