@@ -53,6 +53,54 @@ for t in settlingSuspension:0 consolidation:0 jetScour:0.005; do
     fi
 done
 
+# Decomposed on 2 ranks: jetScour's bed (y < 0.06 m) lies wholly on rank 1,
+# the master holds only water (manual split at mid-height, y = 0.1 m). The
+# advice must still equal the serial run's: the solid fraction, the
+# viscosity and h reach the master reduced over the ranks.
+serial=$(block < "$SCRATCH/jetScour/log.mpmFoam")
+p=$(copyTutorial multiphase/jetScour jetScourParallel)
+sed -i 's/^\( *subCycles .*\)$/\1\n    timeStepAdvice yes;/' "$(props "$p")"
+dt=$(awk '/^deltaT/ {gsub(";", "", $2); print $2}' "$p/system/controlDict")
+sed -i "s/^endTime .*/endTime $dt;/" "$p/system/controlDict"
+runApps "$p" blockMesh mpmSetParticles || { echo "FAIL: jetScourParallel set-up"; failures=$((failures + 1)); }
+# blockMesh numbers the cells block by block (27, 6, 27 columns of 40 rows),
+# x fastest: rank 0 for the top 20 rows
+"$PY" - > "$p/constant/cellDecomposition" <<'PYEOF2'
+print("FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }")
+print(60*40)
+print("(")
+for nx in (27, 6, 27):
+    for j in range(40):
+        for i in range(nx):
+            print(0 if j >= 20 else 1)
+print(")")
+PYEOF2
+decomposeCase "$p" 2 manual 'dataFile "cellDecomposition";'
+(cd "$p" && timeout 120 mpirun -np 2 mpmFoam -parallel > log.mpmFoam 2>&1) \
+    || { echo "FAIL: jetScour on 2 ranks did not run"; tail -20 "$p/log.mpmFoam"; failures=$((failures + 1)); }
+parallel=$(block < "$p/log.mpmFoam")
+echo "== jetScour on 2 ranks, solver:"; echo "$parallel"
+read -r n0 n1 <<< "$("$PY" - "$p" <<'PYEOF2'
+import os, sys
+import mpmPost
+def points(rank):
+    d = os.path.join(sys.argv[1], "processor%d" % rank)
+    try:
+        return len(mpmPost.read_cloud_field(d, "0", "mass"))
+    except (OSError, IndexError, AttributeError):
+        return 0
+print(points(0), points(1))
+PYEOF2
+)"
+check "jetScour on 2 ranks: the master holds no material point, rank 1 the bed" "n0 == 0 and n1 > 0" n0="$n0" n1="$n1"
+if [ "$(echo "$parallel" | grep -c .)" -eq 8 ] && [ "$parallel" = "$serial" ]; then
+    echo "PASS: jetScour on 2 ranks (the bed on rank 1 only): the advice equals the serial run's (8 lines)"
+else
+    echo "FAIL: jetScour on 2 ranks: the advice differs from the serial run's:"
+    diff <(echo "$serial") <(echo "$parallel")
+    failures=$((failures + 1))
+fi
+
 c=$(copyTutorial multiphase/settlingSuspension default)
 runOneStep "$c" default
 if grep -q "timeStepAdvice no" "$c/log.mpmFoam" && ! grep -q "Coupled time-step advice" "$c/log.mpmFoam"; then
