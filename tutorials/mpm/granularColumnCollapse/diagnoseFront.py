@@ -19,6 +19,9 @@ different h (sweep/<material>_a<a>_h<h>), prints three tables:
    of the mass over time, and the tail's mean deceleration over the 0.25 s
    after its peak speed. A free layer on the floor decelerates at mu g.
 
+The times (0.1, 0.45, 0.55 s) and the column x in [1.5, 1.7] a0 are chosen
+for the tutorial's a = 2 column (at rest from t ~ 0.7 s).
+
 Usage: diagnoseFront.py RUN...   (runs of one material and a, any h)
 """
 import os
@@ -98,6 +101,8 @@ def front_history(run):
 
 
 def main():
+    if len(sys.argv) < 2:
+        sys.exit(__doc__.strip().splitlines()[-1])
     runs = sorted(sys.argv[1:], key=cell_size, reverse=True)
     geometry = {run: measure(run) for run in runs}
     a0, h0 = geometry[runs[0]]["a0"], geometry[runs[0]]["h0"]
@@ -139,6 +144,7 @@ def main():
               " = %.2f mu g; final runout (L - a0)/a0 = %.3f"
               % (cell_size(run), rows[peak][2], rows[peak][0], rows[peak][1], rows[end][0], decel, decel/(mu*G),
                  (geometry[run]["Lf"] - a0)/a0))
+
 
 if __name__ == "__main__":
     main()
