@@ -37,9 +37,11 @@ G = 9.81
 
 
 def floor_friction(run):
-    """The floor's Coulomb coefficient, from the run's constant/mpmProperties."""
+    """The floor's Coulomb coefficient from the run's constant/mpmProperties,
+    None for a floor of another type (slip, noSlip)."""
     text = open(os.path.join(run, "constant", "mpmProperties")).read()
-    return float(re.search(r"floor\s*\{[^}]*frictionCoefficient\s+([0-9.eE+-]+)", text).group(1))
+    m = re.search(r"floor\s*\{[^}]*type\s+friction\s*;[^}]*frictionCoefficient\s+([0-9.eE+-]+)", text)
+    return float(m.group(1)) if m else None
 
 
 def cell_size(run):
@@ -125,8 +127,8 @@ def main():
                   % (cell_size(run), depth, " ".join("%6.3f" % v for v in ux), zone, zone/cell_size(run)))
 
     mu = floor_friction(runs[0])
-    print("3. Front (99.9 %% of the mass) and the last 1 %% of the mass; the floor's mu g = %g g = %.2f m/s^2"
-          % (mu, mu*G))
+    print("3. Front (99.9 %% of the mass) and the last 1 %% of the mass; %s"
+          % ("the floor's mu g = %g g = %.2f m/s^2" % (mu, mu*G) if mu else "the floor is not a friction wall"))
     histories = {run: front_history(run) for run in runs}
     print("   %-6s" % "t [s]" + "".join("   h %-6g front  u_x" % cell_size(r) for r in runs))
     for i in range(len(histories[runs[0]])):
@@ -141,9 +143,9 @@ def main():
         end = min(range(len(rows)), key=lambda i: abs(rows[i][0] - rows[peak][0] - window))
         decel = (rows[peak][2] - rows[end][2])/(rows[end][0] - rows[peak][0])
         print("   h %-7g peak tail speed %.3f m/s at t = %g s (front %.3f m); deceleration to t = %g s: %.2f m/s^2"
-              " = %.2f mu g; final runout (L - a0)/a0 = %.3f"
-              % (cell_size(run), rows[peak][2], rows[peak][0], rows[peak][1], rows[end][0], decel, decel/(mu*G),
-                 (geometry[run]["Lf"] - a0)/a0))
+              "%s; final runout (L - a0)/a0 = %.3f"
+              % (cell_size(run), rows[peak][2], rows[peak][0], rows[peak][1], rows[end][0], decel,
+                 " = %.2f mu g" % (decel/(mu*G)) if mu else "", (geometry[run]["Lf"] - a0)/a0))
 
 
 if __name__ == "__main__":
