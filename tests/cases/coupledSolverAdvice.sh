@@ -21,14 +21,21 @@ tool="$MPMFOAM_BUILD/applications/tools/mpmStabilityAnalysis/mpmStabilityAnalysi
 advise="$MPMFOAM_ROOT/applications/tools/mpmStabilityAnalysis/adviseCoupledCase.py"
 block() { awk '/^Coupled time-step advice/ {f = 1} f {print} /largest stable fluid step/ {f = 0}'; }
 
+# oneStepCase <case> [advice yes|default]: the case set to run one fluid
+# step, with timeStepAdvice yes unless default
+oneStepCase()
+{
+    local c="$1" dt
+    [ "${2:-yes}" = yes ] && sed -i 's/^\( *subCycles .*\)$/\1\n    timeStepAdvice yes;/' "$(props "$c")"
+    dt=$(awk '/^deltaT/ {gsub(";", "", $2); print $2}' "$c/system/controlDict")
+    sed -i "s/^endTime .*/endTime $dt;/" "$c/system/controlDict"
+}
+
 # runOneStep <case> [advice yes|default]: one fluid step, log in log.mpmFoam
 runOneStep()
 {
     local c="$1"
-    [ "${2:-yes}" = yes ] && sed -i 's/^\( *subCycles .*\)$/\1\n    timeStepAdvice yes;/' "$(props "$c")"
-    local dt
-    dt=$(awk '/^deltaT/ {gsub(";", "", $2); print $2}' "$c/system/controlDict")
-    sed -i "s/^endTime .*/endTime $dt;/" "$c/system/controlDict"
+    oneStepCase "$@"
     runIn "$c" bash -c "blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1" \
         || { echo "FAIL: $c did not run"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); }
 }
@@ -59,22 +66,10 @@ done
 # viscosity and h reach the master reduced over the ranks.
 serial=$(block < "$SCRATCH/jetScour/log.mpmFoam")
 p=$(copyTutorial multiphase/jetScour jetScourParallel)
-sed -i 's/^\( *subCycles .*\)$/\1\n    timeStepAdvice yes;/' "$(props "$p")"
-dt=$(awk '/^deltaT/ {gsub(";", "", $2); print $2}' "$p/system/controlDict")
-sed -i "s/^endTime .*/endTime $dt;/" "$p/system/controlDict"
+oneStepCase "$p"
 runApps "$p" blockMesh mpmSetParticles || { echo "FAIL: jetScourParallel set-up"; failures=$((failures + 1)); }
-# blockMesh numbers the cells block by block (27, 6, 27 columns of 40 rows),
-# x fastest: rank 0 for the top 20 rows
-"$PY" - > "$p/constant/cellDecomposition" <<'PYEOF2'
-print("FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }")
-print(60*40)
-print("(")
-for nx in (27, 6, 27):
-    for j in range(40):
-        for i in range(nx):
-            print(0 if j >= 20 else 1)
-print(")")
-PYEOF2
+# jetScour's three blocks of 40 rows: rank 0 for the top 20 rows
+manualSlices "$p" "0 if j >= 20 else 1" "27 40 1" "6 40 1" "27 40 1"
 decomposeCase "$p" 2 manual 'dataFile "cellDecomposition";'
 (cd "$p" && timeout 120 mpirun -np 2 mpmFoam -parallel > log.mpmFoam 2>&1) \
     || { echo "FAIL: jetScour on 2 ranks did not run"; tail -20 "$p/log.mpmFoam"; failures=$((failures + 1)); }
