@@ -31,7 +31,7 @@ import sys
 import numpy as np
 
 import mpmPost
-from plotProfile import measure
+from plotProfile import mass_front, mass_order, measure
 
 G = 9.81
 
@@ -65,15 +65,20 @@ def failure_zone(run, t, y, h):
     return wedge, xs[np.argmax(speed > 0.9*wedge)] - xs[np.argmax(speed > 0.1*wedge)]
 
 
-def layer_profile(run, t, x0, x1, bins=8):
-    """(depth, mean u_x in each of `bins` equal slices of the depth, base up)."""
+def layer(run, t, x0, x1):
+    """The points of the column x in [x0, x1) at time t: (depth, height over
+    the depth, u_x)."""
     x = mpmPost.read_positions(run, t)
     u = mpmPost.read_cloud_field(run, t, "U")
     column = (x[:, 0] >= x0) & (x[:, 0] < x1)
     depth = x[column, 1].max()
-    k = np.minimum((x[column, 1]/depth*bins).astype(int), bins - 1)
-    ux = u[column, 0]
-    return depth, np.array([ux[k == i].mean() if np.any(k == i) else np.nan for i in range(bins)])
+    return depth, x[column, 1]/depth, u[column, 0]
+
+
+def slice_means(height, ux, bins):
+    """Mean u_x in each of `bins` equal slices of the depth, base up."""
+    k = np.minimum((height*bins).astype(int), bins - 1)
+    return np.array([ux[k == i].mean() if np.any(k == i) else np.nan for i in range(bins)])
 
 
 def shear_zone(depth, ux):
@@ -94,11 +99,10 @@ def front_history(run):
         x = mpmPost.read_positions(run, t)
         u = mpmPost.read_cloud_field(run, t, "U")
         m = mpmPost.read_cloud_field(run, t, "mass")
-        order = np.argsort(x[:, 0])
-        cumulative = np.cumsum(m[order])/m.sum()
-        front = x[order[min(np.searchsorted(cumulative, 0.999), len(order) - 1)], 0]
+        ordered = mass_order(x, m)
+        order, cumulative = ordered
         tail = order[cumulative > 0.99]
-        rows.append((float(t), front, u[tail, 0].mean()))
+        rows.append((float(t), mass_front(x, m, ordered=ordered), u[tail, 0].mean()))
     return rows
 
 
@@ -121,10 +125,11 @@ def main():
         print("2. Spreading layer, x in [%.2f, %.2f] m, t = %g s: u_x [m/s] by eighths of the depth, base -> surface"
               % (x0, x1, t))
         for run in runs:
-            depth, ux = layer_profile(run, nearest_time(run, t), x0, x1)
-            zone = shear_zone(*layer_profile(run, nearest_time(run, t), x0, x1, bins=32))
+            depth, height, ux = layer(run, nearest_time(run, t), x0, x1)
+            zone = shear_zone(depth, slice_means(height, ux, 32))
             print("   h %-7g depth %.4f m: %s | 10-90 %% shear zone %.4f m = %.1f cells"
-                  % (cell_size(run), depth, " ".join("%6.3f" % v for v in ux), zone, zone/cell_size(run)))
+                  % (cell_size(run), depth, " ".join("%6.3f" % v for v in slice_means(height, ux, 8)), zone,
+                     zone/cell_size(run)))
 
     mu = floor_friction(runs[0])
     print("3. Front (99.9 %% of the mass) and the last 1 %% of the mass; %s"

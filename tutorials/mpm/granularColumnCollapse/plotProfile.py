@@ -53,14 +53,21 @@ def surface(x, dp):
     return np.array(xs), np.array(ys)
 
 
-def mass_front(x, m, fraction=0.999):
-    """Front of the deposit: the x behind which `fraction` of the mass lies.
+def mass_order(x, m):
+    """The points in increasing x and the share of the mass at or behind
+    each: (order, cumulative)."""
+    order = np.argsort(x[:, 0])
+    return order, np.cumsum(m[order])/m.sum()
+
+
+def mass_front(x, m, fraction=0.999, ordered=None):
+    """Front of the deposit: the x behind which `fraction` of the mass lies
+    (`ordered`: mass_order(x, m) when the caller has it already).
     A fixed share of the mass is a fixed amount of material whatever the
     resolution, so this front has a limit under refinement, while the
     farthest point is set by a single point (a grain thrown ahead, or one
     point of a tongue stretched thinner than the point spacing)."""
-    order = np.argsort(x[:, 0])
-    cumulative = np.cumsum(m[order])/m.sum()
+    order, cumulative = ordered or mass_order(x, m)
     return float(x[order[min(np.searchsorted(cumulative, fraction), len(order) - 1)], 0])
 
 

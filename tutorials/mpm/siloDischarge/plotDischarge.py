@@ -237,7 +237,7 @@ def main():
     # bias of resolving the narrow slots worse than the wide ones
     for ratio in sorted(set(round(r["D"]/cell(r)) for r in sand)):
         printExponentFit(sorted([r for r in sand if round(r["D"]/cell(r)) == ratio], key=lambda r: r["D"]),
-                    "D/h = %d for every width" % ratio)
+                         "D/h = %d for every width" % ratio)
     for Dv in sorted(set(r["D"] for r in sand)):
         same = sorted([r for r in sand if r["D"] == Dv], key=cell, reverse=True)
         if len(same) > 1:
