@@ -124,5 +124,29 @@ class Beverloo(unittest.TestCase):
         np.testing.assert_allclose(plotDischarge.beverlooC(self.D, W, delta), 1.2, rtol=0.01)
 
 
+class BadInput(unittest.TestCase):
+    """Scripts given nothing to measure say so and exit non-zero, with no
+    traceback."""
+    def run_main(self, module, argv):
+        saved = sys.argv
+        sys.argv = [module.__name__ + ".py"] + argv
+        try:
+            with self.assertRaises(SystemExit) as stop:
+                module.main()
+        finally:
+            sys.argv = saved
+        return str(stop.exception.code)
+
+    def test_silo_without_a_finished_run(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as empty:
+            message = self.run_main(plotDischarge, ["--no-plot", empty])
+        self.assertIn("no finished run among " + empty, message)
+        self.assertIn("postProcessing/openBoundaries", message)
+
+    def test_front_diagnosis_without_runs(self):
+        self.assertIn("Usage: diagnoseFront.py RUN...", self.run_main(diagnoseFront, []))
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)
