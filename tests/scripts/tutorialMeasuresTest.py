@@ -61,6 +61,26 @@ class ColumnFronts(unittest.TestCase):
         self.assertEqual(plotRunout.run_parameters("sweep/sand_a2_h0.005"), ("sand", 2.0, 0.005))
         self.assertEqual(plotRunout.run_parameters("sweep/glassBeads_a0.5_h0.01_E2e5_geostatic_FLIP/"),
                          ("glassBeads_E2e5_geostatic_FLIP", 0.5, 0.01))
+        # a run with other points per cell is another series, not a resolution
+        self.assertEqual(plotRunout.run_parameters("sweep/sand_a2_h0.01_FLIP_ppc4"), ("sand_FLIP_ppc4", 2.0, 0.01))
+
+    def test_fronts_of_a_uniform_deposit(self):
+        # 10000 equal points evenly over [a0, 3 a0): the front of a share q of
+        # the mass is at a0 + 2 a0 q, so (L_q - a0)/a0 = 2 q
+        a0 = 0.2
+        x = cloud(a0 + 2*a0*(np.arange(10000) + 0.5)/10000)
+        for q, value in zip(plotRunout.FRONT_FRACTIONS, plotRunout.fronts(x, np.ones(10000), a0)):
+            self.assertAlmostEqual(value, 2*q, delta=2e-4)
+        # the far half twice as heavy: the near half holds 1/3 of the mass, so
+        # the 90 % front lies 85 % into the far half, x = 2 a0 + 0.85 a0
+        m = np.where(x[:, 0] >= 2*a0, 2.0, 1.0)
+        self.assertAlmostEqual(plotRunout.fronts(x, m, a0, (0.9,))[0], 1.85, delta=2e-4)
+
+    def test_halvings_pair_only_halved_cells(self):
+        by_h = [(0.005, 3.9), (0.02, 2.0), (0.01, 3.0), (0.003, 4.0)]
+        self.assertEqual([(h1, h2, v1, v2) for h1, h2, v1, v2, _ in plotRunout.halvings(by_h)],
+                         [(0.02, 0.01, 2.0, 3.0), (0.01, 0.005, 3.0, 3.9)])
+        self.assertEqual([round(c, 12) for *_, c in plotRunout.halvings(by_h)], [0.5, 0.3])
 
     def test_lube_law(self):
         self.assertAlmostEqual(plotRunout.lube(2.0), 2.4)

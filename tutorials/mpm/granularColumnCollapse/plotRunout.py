@@ -11,7 +11,10 @@ quasi-2D law
                     1.9 a^(2/3)    a > 2.3
 
 and the change of the runout when the cell size halves, and writes
-runoutVsAspectRatio.png. Usage: plotRunout.py RUN... [--no-plot]
+runoutVsAspectRatio.png. It also prints the fronts behind which 90, 95, 98,
+99, 99.5 and 99.9 % of the mass lie, and their change per halving: they show
+whether the whole deposit or only its thinnest tip moves with the cell size.
+Usage: plotRunout.py RUN... [--no-plot]
 """
 import math
 import os
@@ -21,8 +24,11 @@ import sys
 import numpy as np
 
 import mpmPost
-from plotProfile import mass_front, measure
+from plotProfile import mass_front, mass_order, measure
 
+
+# The shares of the final mass behind the fronts of the convergence table
+FRONT_FRACTIONS = (0.9, 0.95, 0.98, 0.99, 0.995, 0.999)
 
 # The materials of constant/mpmProperties, by law
 LABELS = {"sand": "Drucker-Prager (sand)", "glassBeads": "mu(I) (glassBeads)"}
@@ -34,10 +40,11 @@ def lube(a):
 
 def run_parameters(run):
     """(material [with '_E<E>' when the sweep set E, '_geostatic' when it started geostatic,
-    '_PIC' or '_FLIP' for another transfer than APIC], a, h) from the run's name."""
-    m = re.search(r"([A-Za-z0-9]+)_a([0-9.]+)_h([0-9.]+)(_E[-+0-9.e]+)?(_geostatic)?(_PIC|_FLIP)?$",
+    '_PIC' or '_FLIP' for another transfer than APIC, '_ppc<N>' for N x N points per cell],
+    a, h) from the run's name."""
+    m = re.search(r"([A-Za-z0-9]+)_a([0-9.]+)_h([0-9.]+)(_E[-+0-9.e]+)?(_geostatic)?(_PIC|_FLIP)?(_ppc[0-9]+)?$",
                   os.path.basename(run.rstrip("/")))
-    return (m.group(1) + (m.group(4) or "") + (m.group(5) or "") + (m.group(6) or ""),
+    return ("".join([m.group(1)] + [g or "" for g in m.group(4, 5, 6, 7)]),
             float(m.group(2)), float(m.group(3)))
 
 
@@ -49,6 +56,21 @@ def bulk_measures(x0, mass0, x1, mass1, a0):
     front90 = (mass_front(x1, mass1, 0.9) - a0)/a0
     travel = (np.dot(mass1, x1[:, 0])/mass1.sum() - np.dot(mass0, x0[:, 0])/mass0.sum())/a0
     return front90, travel
+
+
+def fronts(x, m, a0, fractions=FRONT_FRACTIONS):
+    """(L_q - a0)/a0 for each share q of the mass behind the front L_q."""
+    ordered = mass_order(x, m)
+    return [(mass_front(x, m, q, ordered) - a0)/a0 for q in fractions]
+
+
+def halvings(by_h):
+    """The neighbours in cell size of by_h = [(h, value), ...] whose sizes differ by a factor
+    of two, coarse first: [(h coarse, h fine, value coarse, value fine,
+    relative change)]."""
+    by_h = sorted(by_h, reverse=True)
+    return [(h1, h2, v1, v2, (v2 - v1)/v1)
+            for (h1, v1), (h2, v2) in zip(by_h, by_h[1:]) if abs(h1/h2 - 2) < 1e-6]
 
 
 def main():
@@ -63,24 +85,37 @@ def main():
         s = mpmPost.read_summary(run)
         front90, travel = bulk_measures(m["x0"], mpmPost.read_cloud_field(run, m["times"][0], "mass"),
                                         m["x1"], m["m1"], m["a0"])
-        rows.append((law, a, h, runout, front90, travel))
+        rows.append((law, a, h, runout, front90, travel, fronts(m["x1"], m["m1"], m["a0"])))
         farthest = (m["LfMax"] - m["a0"])/m["a0"]
         print("%-26s %5g %7g %6d %8.3f %8.3f %8.3f %7.3f %10.3g %8s %9.3f %9.4f" % (
               law, m["h0"]/m["a0"], h, len(m["x1"]), runout, farthest, lube(a), runout/lube(a),
               s["maxU"][-1], m["times"][-1], front90, travel))
 
-    # The front (99.9 % of the mass) lies in a tail that thins under
-    # refinement down to the point spacing, so it converges last; the bulk
-    # (90 % front, centre of mass) converges first (README).
-    for column, name in ((3, "runout"), (4, "90 % front"), (5, "centre-of-mass travel")):
+    # The runout (99.9 % of the mass) and the centre of mass; the fronts of
+    # other shares of the mass follow.
+    for column, name in ((3, "runout"), (5, "centre-of-mass travel")):
         print("Change of the %s when the cell size halves:" % name)
         for law in sorted({r[0] for r in rows}):
             for a in sorted({r[1] for r in rows if r[0] == law}):
-                by_h = sorted((r[2], r[column]) for r in rows if r[0] == law and r[1] == a)
-                for (h2, r2), (h1, r1) in zip(by_h, by_h[1:]):
-                    if abs(h1/h2 - 2) < 1e-6:
-                        print("  %-16s a = %-4g h %g -> %g: %.3f -> %.3f (%+.1f %%)"
-                              % (law, a, h1, h2, r1, r2, 100*(r2 - r1)/r1))
+                by_h = [(r[2], r[column]) for r in rows if r[0] == law and r[1] == a]
+                for h1, h2, r1, r2, change in halvings(by_h):
+                    print("  %-16s a = %-4g h %g -> %g: %.3f -> %.3f (%+.1f %%)"
+                          % (law, a, h1, h2, r1, r2, 100*change))
+
+    # Which part of the deposit moves with the cell size: the fronts of a
+    # growing share of the mass (docs/druckerPrager.md, "Convergence").
+    print("Fronts (L_q - a0)/a0 behind which q of the mass lies, and their change when the cell size halves:")
+    print("  %-22s %5s %13s " % ("material", "a", "h [m]") + " ".join("%8s" % ("%g %%" % (100*q)) for q in FRONT_FRACTIONS))
+    for law in sorted({r[0] for r in rows}):
+        for a in sorted({r[1] for r in rows if r[0] == law}):
+            mine = sorted(((r[2], r[6]) for r in rows if r[0] == law and r[1] == a), reverse=True)
+            for h, values in mine:
+                print("  %-22s %5g %13g " % (law, a, h) + " ".join("%8.3f" % v for v in values))
+            columns = [halvings([(h, values[i]) for h, values in mine]) for i in range(len(FRONT_FRACTIONS))]
+            for k in range(len(columns[0])):
+                h1, h2 = columns[0][k][:2]
+                print("  %-22s %5g %13s " % (law, a, "%g->%g" % (h1, h2))
+                      + " ".join("%+7.1f%%" % (100*column[k][4]) for column in columns))
 
     if "--no-plot" in sys.argv:
         return
