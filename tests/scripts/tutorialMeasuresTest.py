@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The measures the tutorials' scripts report, on made-up data whose answer
 is known: the column's fronts and bulk measures (plotProfile.py,
-plotRunout.py), the spreading layer's shear zone (diagnoseFront.py) and the
-silo's Beverloo fits (plotDischarge.py). The case tests check the runs; these
+plotRunout.py), its failure wedge, spreading layer's shear zone and tail's
+deceleration (diagnoseFront.py) and the silo's Beverloo fits
+(plotDischarge.py). The case tests check the runs; these
 check that the numbers printed from them measure what they say."""
 import os
 import sys
@@ -113,6 +114,46 @@ class ShearZone(unittest.TestCase):
         depth, ux = self.profile(0.03, 0.07)
         ux[:20] = -0.2          # the base sliding back a little
         self.assertAlmostEqual(diagnoseFront.shear_zone(depth, ux), 0.8*0.04, delta=depth/400)
+
+
+class FailureWedge(unittest.TestCase):
+    h = 0.01
+
+    def line(self, y, ramp=(0.3, 0.5), speed=0.8, n=2001):
+        """Points on the line y over x in [0, 1]: at rest before the ramp,
+        sliding at `speed` along (1, -1)/sqrt(2) beyond it, linear between."""
+        xs = np.linspace(0.0, 1.0, n)
+        s = speed*np.clip((xs - ramp[0])/(ramp[1] - ramp[0]), 0, 1)
+        return cloud(xs, np.full(n, y)), np.column_stack([s, -s, np.zeros(n)])/np.sqrt(2)
+
+    def test_speed_and_width_of_a_linear_ramp(self):
+        x, u = self.line(0.1)
+        wedge, width = diagnoseFront.wedge_and_width(x, u, 0.1, self.h)
+        self.assertAlmostEqual(wedge, 0.8, places=9)        # the speed, not u_x
+        self.assertAlmostEqual(width, 0.8*0.2, delta=1e-3)  # 10 % to 90 % of the ramp
+
+    def test_points_off_the_line_are_left_out(self):
+        x, u = self.line(0.1)
+        xo, uo = self.line(0.1 + self.h, ramp=(0.0, 0.05), speed=3.0)
+        wedge, width = diagnoseFront.wedge_and_width(np.vstack([x, xo]), np.vstack([u, uo]), 0.1, self.h)
+        self.assertAlmostEqual(wedge, 0.8, places=9)
+        self.assertAlmostEqual(width, 0.16, delta=1e-3)
+
+
+class TailDeceleration(unittest.TestCase):
+    def rows(self, decel, peak=1.6, t_peak=0.3):
+        """front_history rows every 0.05 s: the tail accelerates to `peak` at
+        t_peak, then slows at `decel` m/s^2 until it stops."""
+        t = np.round(np.arange(0.0, 1.1001, 0.05), 10)
+        u = np.where(t <= t_peak, peak*t/t_peak, np.maximum(peak - decel*(t - t_peak), 0.0))
+        return [(ti, 0.2 + ui*ti, ui) for ti, ui in zip(t, u)]
+
+    def test_deceleration_after_the_peak(self):
+        peak, end, decel = diagnoseFront.tail_deceleration(self.rows(3.0))
+        self.assertEqual((peak[0], end[0]), (0.3, 0.55))
+        self.assertAlmostEqual(decel, 3.0, places=9)
+        # a slower stop is measured as such, over the same window
+        self.assertAlmostEqual(diagnoseFront.tail_deceleration(self.rows(2.0, t_peak=0.4))[2], 2.0, places=9)
 
 
 class Beverloo(unittest.TestCase):

@@ -53,16 +53,22 @@ def nearest_time(run, t):
     return min(ts, key=lambda s: abs(float(s) - t))
 
 
-def failure_zone(run, t, y, h):
-    """(wedge speed, 10-90 % width) on the line y at time t."""
-    x = mpmPost.read_positions(run, t)
-    u = mpmPost.read_cloud_field(run, t, "U")
+def wedge_and_width(x, u, y, h):
+    """(wedge speed, 10-90 % width) of the points x, velocities u on the line
+    y (within h/4): the wedge's speed is the 95th percentile of the speeds
+    there, the width the distance from the first point faster than 10 % of
+    it to the first faster than 90 %, in increasing x."""
     line = np.abs(x[:, 1] - y) < h/4 + 1e-9
     order = np.argsort(x[line, 0])
     xs = x[line, 0][order]
     speed = np.hypot(u[line, 0], u[line, 1])[order]
     wedge = np.percentile(speed, 95)
     return wedge, xs[np.argmax(speed > 0.9*wedge)] - xs[np.argmax(speed > 0.1*wedge)]
+
+
+def failure_zone(run, t, y, h):
+    """(wedge speed, 10-90 % width) on the line y at time t."""
+    return wedge_and_width(mpmPost.read_positions(run, t), mpmPost.read_cloud_field(run, t, "U"), y, h)
 
 
 def layer(run, t, x0, x1):
@@ -106,6 +112,14 @@ def front_history(run):
     return rows
 
 
+def tail_deceleration(rows, window=0.25):
+    """The tail's mean deceleration over `window` seconds after its peak
+    speed, from front_history's rows: (peak row, end row, deceleration)."""
+    peak = max(range(len(rows)), key=lambda i: rows[i][2])
+    end = min(range(len(rows)), key=lambda i: abs(rows[i][0] - rows[peak][0] - window))
+    return rows[peak], rows[end], (rows[peak][2] - rows[end][2])/(rows[end][0] - rows[peak][0])
+
+
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__.strip().splitlines()[-1])
@@ -141,15 +155,11 @@ def main():
               + "".join("   %13.3f %5.2f" % histories[r][i][1:] for r in runs if i < len(histories[r])))
     # The tails reach their peak speed at the same time at every h; compare
     # their deceleration over the same window after it.
-    window = 0.25
     for run in runs:
-        rows = histories[run]
-        peak = max(range(len(rows)), key=lambda i: rows[i][2])
-        end = min(range(len(rows)), key=lambda i: abs(rows[i][0] - rows[peak][0] - window))
-        decel = (rows[peak][2] - rows[end][2])/(rows[end][0] - rows[peak][0])
+        peak, end, decel = tail_deceleration(histories[run])
         print("   h %-7g peak tail speed %.3f m/s at t = %g s (front %.3f m); deceleration to t = %g s: %.2f m/s^2"
               "%s; final runout (L - a0)/a0 = %.3f"
-              % (cell_size(run), rows[peak][2], rows[peak][0], rows[peak][1], rows[end][0], decel,
+              % (cell_size(run), peak[2], peak[0], peak[1], end[0], decel,
                  " = %.2f mu g" % (decel/(mu*G)) if mu else "", (geometry[run]["Lf"] - a0)/a0))
 
 
