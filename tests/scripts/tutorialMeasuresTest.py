@@ -82,6 +82,11 @@ class ColumnFronts(unittest.TestCase):
         self.assertEqual([(h1, h2, v1, v2) for h1, h2, v1, v2, _ in plotRunout.halvings(by_h)],
                          [(0.02, 0.01, 2.0, 3.0), (0.01, 0.005, 3.0, 3.9)])
         self.assertEqual([round(c, 12) for *_, c in plotRunout.halvings(by_h)], [0.5, 0.3])
+        # the fronts table passes each run's fronts as one array: a change per front
+        fronts = [(0.005, np.array([3.0, 6.0])), (0.01, np.array([2.0, 4.0]))]
+        (h1, h2, _, _, change), = plotRunout.halvings(fronts)
+        self.assertEqual((h1, h2), (0.01, 0.005))
+        self.assertEqual(list(change), [0.5, 0.5])
 
     def test_lube_law(self):
         self.assertAlmostEqual(plotRunout.lube(2.0), 2.4)

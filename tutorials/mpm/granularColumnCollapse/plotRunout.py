@@ -67,8 +67,9 @@ def fronts(x, m, a0, fractions=FRONT_FRACTIONS):
 def halvings(by_h):
     """The neighbours in cell size of by_h = [(h, value), ...] whose sizes differ by a factor
     of two, coarse first: [(h coarse, h fine, value coarse, value fine,
-    relative change)]."""
-    by_h = sorted(by_h, reverse=True)
+    relative change)]. A value may be a numpy array (the change is then per
+    element)."""
+    by_h = sorted(by_h, key=lambda pair: pair[0], reverse=True)
     return [(h1, h2, v1, v2, (v2 - v1)/v1)
             for (h1, v1), (h2, v2) in zip(by_h, by_h[1:]) if abs(h1/h2 - 2) < 1e-6]
 
@@ -85,7 +86,7 @@ def main():
         s = mpmPost.read_summary(run)
         front90, travel = bulk_measures(m["x0"], mpmPost.read_cloud_field(run, m["times"][0], "mass"),
                                         m["x1"], m["m1"], m["a0"])
-        rows.append((law, a, h, runout, front90, travel, fronts(m["x1"], m["m1"], m["a0"])))
+        rows.append((law, a, h, runout, travel, np.array(fronts(m["x1"], m["m1"], m["a0"]))))
         farthest = (m["LfMax"] - m["a0"])/m["a0"]
         print("%-26s %5g %7g %6d %8.3f %8.3f %8.3f %7.3f %10.3g %8s %9.3f %9.4f" % (
               law, m["h0"]/m["a0"], h, len(m["x1"]), runout, farthest, lube(a), runout/lube(a),
@@ -93,7 +94,7 @@ def main():
 
     # The runout (99.9 % of the mass) and the centre of mass; the fronts of
     # other shares of the mass follow.
-    for column, name in ((3, "runout"), (5, "centre-of-mass travel")):
+    for column, name in ((3, "runout"), (4, "centre-of-mass travel")):
         print("Change of the %s when the cell size halves:" % name)
         for law in sorted({r[0] for r in rows}):
             for a in sorted({r[1] for r in rows if r[0] == law}):
@@ -108,14 +109,12 @@ def main():
     print("  %-22s %5s %13s " % ("material", "a", "h [m]") + " ".join("%8s" % ("%g %%" % (100*q)) for q in FRONT_FRACTIONS))
     for law in sorted({r[0] for r in rows}):
         for a in sorted({r[1] for r in rows if r[0] == law}):
-            mine = sorted(((r[2], r[6]) for r in rows if r[0] == law and r[1] == a), reverse=True)
+            mine = sorted(((r[2], r[5]) for r in rows if r[0] == law and r[1] == a), key=lambda pair: -pair[0])
             for h, values in mine:
                 print("  %-22s %5g %13g " % (law, a, h) + " ".join("%8.3f" % v for v in values))
-            columns = [halvings([(h, values[i]) for h, values in mine]) for i in range(len(FRONT_FRACTIONS))]
-            for k in range(len(columns[0])):
-                h1, h2 = columns[0][k][:2]
+            for h1, h2, _, _, changes in halvings(mine):
                 print("  %-22s %5g %13s " % (law, a, "%g->%g" % (h1, h2))
-                      + " ".join("%+7.1f%%" % (100*column[k][4]) for column in columns))
+                      + " ".join("%+7.1f%%" % (100*c) for c in changes))
 
     if "--no-plot" in sys.argv:
         return
