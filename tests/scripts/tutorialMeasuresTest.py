@@ -213,6 +213,19 @@ class BadInput(unittest.TestCase):
     def test_front_diagnosis_without_runs(self):
         self.assertIn("Usage: diagnoseFront.py RUN...", self.run_main(diagnoseFront, []))
 
+    def test_sweep_rejects_a_bad_option_value_before_running(self):
+        import subprocess
+        sweep = os.path.join(ROOT, "tutorials", "mpm", "granularColumnCollapse", "sweepAspectRatio")
+        for argv, message in ((["-ppc", "x"], "-ppc x: give a whole number of points per cell and direction, 1 to 9"),
+                              (["-ppc", "10"], "-ppc 10: give a whole number of points per cell and direction"),
+                              (["-transfer", "MLS"], "-transfer MLS: valid transfers are APIC PIC FLIP")):
+            done = subprocess.run(["bash", sweep, "-laws", "noSuchMaterial"] + argv,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+            self.assertEqual(done.returncode, 1, argv)
+            self.assertIn("sweepAspectRatio: " + message, done.stderr)
+            # stopped at the option, before any run directory was made
+            self.assertNotIn("column a =", done.stdout)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)
