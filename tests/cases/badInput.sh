@@ -57,7 +57,7 @@ c=$(freshCopy misspeltTopLevel)
 sed -i 's/^logInterval /logInteval  /' "$(props "$c")"
 expectFailure "misspelt mpmProperties keyword: did you mean" "Unknown keyword 'logInteval' in mpmProperties; did you mean 'logInterval'\?" runIn "$c" mpmFoam
 expectFailure "misspelt mpmProperties keyword: file and line" "file: .*constant/mpmProperties at line [0-9]+" runIn "$c" mpmFoam
-expectFailure "misspelt mpmProperties keyword: valid keywords" "Valid keywords: shapeFunction transfer flipRatio .* timeStep materials walls coupling pointOutput" runIn "$c" mpmFoam
+expectFailure "misspelt mpmProperties keyword: valid keywords" "Valid keywords: shapeFunction transfer flipRatio .* timeStep lattice materials walls obstacles coupling pointOutput" runIn "$c" mpmFoam
 
 c=$(freshCopy unknownTopLevel)
 sed -i 's/^logInterval .*/colour blue;/' "$(props "$c")"
@@ -129,17 +129,14 @@ c=$(freshCopy misspeltSeedTopLevel)
 sed -i 's/^regions$/Regions/' "$c/system/mpmSetParticlesDict"
 expectFailure "misspelt mpmSetParticlesDict keyword" "Unknown keyword 'Regions' in mpmSetParticlesDict; did you mean 'regions'\?" runIn "$c" mpmSetParticles
 
-c=$(freshCopy nonUniformMesh)
-sed -i 's/simpleGrading (1 1 1)/simpleGrading (3 1 1)/' "$c/system/blockMeshDict"
-runIn "$c" blockMesh > /dev/null 2>&1
-expectFailure "graded mesh" "MPM needs a uniform mesh, but cell" runIn "$c" mpmFoam
-expectFailure "graded mesh (seeding)" "MPM needs a uniform mesh" runIn "$c" mpmSetParticles
-
-c=$(freshCopy nonHexMesh)
-# Collapse one edge of the block: prism cells.
-sed -i 's/(0 0 1) (\$length 0 1) (\$length 1 1) (0 1 1)/(0 0 1) ($length 0 1) ($length 0 1) (0 0 1)/' "$c/system/blockMeshDict"
-runIn "$c" blockMesh > "$c/log.blockMesh.prism" 2>&1
-expectFailure "non-hex mesh" "MPM needs a uniform Cartesian hex mesh, but cell 0 .* is a prism|MPM needs axis-aligned box cells" runIn "$c" mpmFoam
+# A graded mesh runs on a lattice of its own (tests/cases/anyMesh.sh); a
+# lattice spacing that is not a number is refused
+c=$(freshCopy latticeSpacingWord)
+printf 'lattice { spacing fine; }\n' >> "$(props "$c")"
+expectFailure "lattice spacing not a number" "spacing" runIn "$c" mpmFoam
+c=$(freshCopy latticeUnknownKeyword)
+printf 'lattice { spacin 0.1; }\n' >> "$(props "$c")"
+expectFailure "misspelt lattice keyword" "Unknown keyword 'spacin' in lattice; did you mean 'spacing'\\?" runIn "$c" mpmFoam
 
 c=$(freshCopy seededOutside)
 sed -i 's/max           (25 1 1);/max           (40 1 1);/' "$c/system/mpmSetParticlesDict"

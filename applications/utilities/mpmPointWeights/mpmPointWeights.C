@@ -45,7 +45,12 @@ int main(int argc, char *argv[])
             << "-empty " << empty << " must be > 0: decomposePar needs"
             << " positive weights" << exit(FatalError);
     }
-    const meshLattice lattice(mesh);
+    const IOdictionary mpmDict
+    (
+        IOobject("mpmProperties", runTime.constant(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE)
+    );
+    const meshLattice lattice(mesh, mpmDict);
 
     for (const instant& t : times)
     {
@@ -61,9 +66,7 @@ int main(int argc, char *argv[])
         );
         for (mpm::Index p = 0; p < points.size(); ++p)
         {
-            label ijk[3];
-            lattice.indicesOf(point(points.x[0][p], points.x[1][p], points.x[2][p]), ijk);
-            const label celli = lattice.cellOf(ijk[0], ijk[1], ijk[2]);
+            const label celli = lattice.fvCellOf(point(points.x[0][p], points.x[1][p], points.x[2][p]));
             if (celli >= 0) w[celli] += 1;
         }
         w.write();

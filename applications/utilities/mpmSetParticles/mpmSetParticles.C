@@ -22,6 +22,7 @@ Description
 #include "cloud.H"
 #include "knownKeywords.H"
 #include "completeTimes.H"
+#include "obstacles.H"
 
 int main(int argc, char *argv[])
 {
@@ -74,8 +75,16 @@ int main(int argc, char *argv[])
             IOobject::MUST_READ, IOobject::NO_WRITE)
     );
     const materialLibrary materials(mpmDict, false);
-    const meshLattice lattice(mesh);
+    const meshLattice lattice(mesh, mpmDict);
     lattice.report(Info);
+    if (Pstream::parRun() && !lattice.cellsAreNodes())
+    {
+        FatalErrorInFunction
+            << "On a mesh that is not a uniform box, seed serially and then"
+            << " decomposePar: a point seeded here belongs to the processor of"
+            << " its lattice cell, which may not hold its mesh cell."
+            << exit(FatalError);
+    }
 
     if (!seedDict.isDict("regions"))
     {
@@ -84,7 +93,37 @@ int main(int argc, char *argv[])
             << exit(FatalIOError);
     }
     mpm::Particles points;
-    const label nLocal = seedRegions(mesh, lattice, materials, seedDict.subDict("regions"), points);
+    label nLocal = seedRegions(mesh, lattice, materials, seedDict.subDict("regions"), points);
+
+    // Points inside obstacles (level-set walls) are left out, counted
+    {
+        const std::vector<mpm::LevelSetWall> obstacles(readObstacles(mesh, mpmDict, false));
+        List<label> inside(obstacles.size(), Zero);
+        std::vector<mpm::Index> out;
+        for (label p = 0; p < nLocal; ++p)
+        {
+            const mpm::Real x[3] = {points.x[0][p], points.x[1][p], points.x[2][p]};
+            forAll(obstacles, w)
+            {
+                mpm::Real n[3];
+                if (obstacles[w].shape->distance(x, n, GREAT) < 0)
+                {
+                    ++inside[w];
+                    out.push_back(p);
+                    break;
+                }
+            }
+        }
+        points.remove(out);
+        nLocal = points.size();
+        Pstream::listCombineGather(inside, plusEqOp<label>());
+        Pstream::listCombineScatter(inside);
+        forAll(obstacles, w)
+        {
+            Info<< "Obstacle " << obstacles[w].name.c_str() << ": left out "
+                << inside[w] << " points inside it" << nl;
+        }
+    }
     const label n = returnReduce(nLocal, sumOp<label>());
     if (n == 0)
     {

@@ -15,6 +15,7 @@
 #include "../grid/boundary.hpp"
 #include "../grid/gridState.hpp"
 #include "../grid/lattice.hpp"
+#include "../grid/levelSet.hpp"
 #include "../kernels/views.hpp"
 #include "../parallel/subdomain.hpp"
 #include "../particles/particles.hpp"
@@ -109,6 +110,17 @@ public:
     Real sumAll(Real x) const { return subdomain_ ? subdomain_->comm().sum(x) : x; }
     Real maxAll(Real x) const { return subdomain_ ? subdomain_->comm().max(x) : x; }
     const Boundary& boundary() const { return boundary_; }
+
+    // Walls of any shape (grid/levelSet.hpp), after setup: their node
+    // planes on this rank's lattice. unsolved: the coordinate of a 2D
+    // case's mid-plane along its unsolved axis. Empty: none, nothing is
+    // computed. Throws std::invalid_argument for a bad wall.
+    void setLevelSetWalls(std::vector<LevelSetWall> walls, const std::array<Real, 3>& unsolved);
+    const LevelSetWalls& levelSetWalls() const { return levelSet_; }
+    // Points put back on a level-set wall's surface after a step, on this
+    // rank since setup (the node condition keeps most outside; the rest
+    // are within a fraction of a cell)
+    Index levelSetContainedCount() const { return contained_; }
     const StepOptions& options() const { return options_; }
     Particles& particles() { return particles_; }
     const Particles& particles() const { return particles_; }
@@ -156,6 +168,11 @@ public:
     // Maps mass, volume and momentum to the grid at the current positions
     // and sets grid().velocity; for output at any time.
     void mapToGrid();
+
+    // Decomposed runs, after mapToGrid(): the owners' summed mass and
+    // volume sent to their halo copies too (a mesh sampling the lattice
+    // where another rank owns the node: meshLattice's own lattice)
+    void copyMassToHalo() { copyHalo({grid_.mass.data(), grid_.volume.data()}); }
 
     // Grain volume (mass/rho0) of each material's points, spread to the
     // nodes with the shape functions and folded from the ghosts like the
@@ -246,6 +263,10 @@ private:
     // by the normal impulse of the wall's fold (momentum + dt force of its
     // contact ghosts) and contact at each node
     void applyFriction(std::array<std::vector<Real>, 3>& v, Real dt);
+    // The level-set walls' node condition on an updated velocity
+    void applyLevelSetWalls(std::array<std::vector<Real>, 3>& v);
+    // Puts points inside a level-set wall back on its surface
+    void containPoints();
     void updateStress(Real dt);
     void movePoints();
 
@@ -253,6 +274,8 @@ private:
     Lattice lattice_;
     std::shared_ptr<const Subdomain> subdomain_;
     Boundary boundary_;
+    LevelSetWalls levelSet_;
+    Index contained_ = 0;
     StepOptions options_;
     Particles particles_;
     std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;

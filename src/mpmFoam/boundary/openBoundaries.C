@@ -233,7 +233,7 @@ void Foam::openBoundaries::inject(mpm::MpmSystem& system, const scalar dt)
                 const point x(in.layer[k] + depth*in.inward);
                 label ijk[3];
                 lattice_.indicesOf(x, ijk);
-                if (lattice_.cellOf(ijk[0], ijk[1], ijk[2]) < 0) continue;   // another processor's
+                if (!lattice_.ownsLatticeCell(ijk[0], ijk[1], ijk[2])) continue;   // another processor's
                 const mpm::Index p = P.add
                 (
                     {x.x(), x.y(), x.z()},

@@ -6,6 +6,7 @@
 #include "emptyPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "surfaceWallShape.H"
 
 namespace
 {
@@ -61,6 +62,53 @@ void checkWallEntries(const fvMesh& mesh, const dictionary& walls)
     }
 }
 
+// The wall patches' faces off the lattice box's sides as level-set walls,
+// one per patch, with the patch's condition: the distance to the patch's
+// faces, its sign from the mesh's whole boundary (empty patches included,
+// so that a 2D mesh's boundary is closed), the material inside the mesh.
+void readPatchWalls
+(
+    const fvMesh& mesh,
+    const mpm::BoundarySpec& spec,
+    const labelList& patchCondition,
+    const List<DynamicList<label>>& offBox,
+    std::vector<mpm::LevelSetWall>& walls
+)
+{
+    // Decomposed: any rank's faces count (their surfaces are gathered)
+    labelList count(offBox.size());
+    forAll(offBox, patchi) count[patchi] = offBox[patchi].size();
+    Pstream::listCombineGather(count, plusEqOp<label>());
+    Pstream::listCombineScatter(count);
+    if (sum(count) == 0) return;
+    const polyBoundaryMesh& bm = mesh.boundaryMesh();
+    // The domain's whole boundary: every patch but those between processors
+    // (a cyclic's processor part is the cyclic's)
+    DynamicList<label> all;
+    for (const polyPatch& pp : bm)
+    {
+        if (isA<processorPolyPatch>(pp) && !isA<processorCyclicPolyPatch>(pp)) continue;
+        for (label i = 0; i < pp.size(); ++i) all.append(pp.start() + i);
+    }
+    const auto sign = std::make_shared<closedSurface>(triangulate(mesh, all));
+    Info<< "Walls off the lattice box's sides (level sets, docs/geometry.md):" << nl;
+    forAll(offBox, patchi)
+    {
+        if (count[patchi] == 0) continue;
+        mpm::LevelSetWall w;
+        w.name = bm[patchi].name();
+        w.condition = spec.conditions[patchCondition[patchi]];
+        w.shape = std::make_shared<surfaceWallShape>
+        (
+            triangulate(mesh, offBox[patchi]), sign, true,
+            "patch " + w.name + ", " + std::to_string(count[patchi]) + " faces"
+        );
+        Info<< "    " << w.shape->describe().c_str() << ": "
+            << mpm::wallTypeName(w.condition.type) << nl;
+        walls.push_back(std::move(w));
+    }
+}
+
 } // namespace
 
 
@@ -81,9 +129,11 @@ mpm::BoundarySpec Foam::readWallConditions
     const fvMesh& mesh,
     const meshLattice& ml,
     const dictionary& mpmDict,
-    wordList& conditionPatch
+    wordList& conditionPatch,
+    std::vector<mpm::LevelSetWall>& patchWalls
 )
 {
+    patchWalls.clear();
     const mpm::Lattice& L = ml.lattice();
     const dictionary& walls = optionalSubDict(mpmDict, "walls");
     checkWallEntries(mesh, walls);
@@ -175,6 +225,9 @@ mpm::BoundarySpec Foam::readWallConditions
         names.append(pp.name());
     }
 
+    // Faces of each patch that are not on the lattice box's sides: level-set
+    // walls (a mesh that is not a uniform box)
+    List<DynamicList<label>> offBox(mesh.boundaryMesh().size());
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
         // A cyclic split by the decomposition is a processorCyclic patch:
@@ -195,19 +248,74 @@ mpm::BoundarySpec Foam::readWallConditions
                 if (mag(fc[a] - L.origin[a]) < tol) side = 2*a;
                 else if (mag(fc[a] - L.origin[a] - L.length(a)) < tol) side = 2*a + 1;
             }
-            if (side < 0)
+            if (side < 0 && ml.cellsAreNodes())
             {
                 FatalErrorInFunction
                     << "Face " << facei << " of patch " << pp.name() << " at "
                     << fc << " is not on the boundary of the box: MPM walls "
                     << "must be the sides of the domain" << exit(FatalError);
             }
-            label ijk[3];
-            ml.indicesOf(fc, ijk);
+            if (side < 0)
+            {
+                const mpm::WallType t = spec.conditions[condition].type;
+                if (mpm::isOpen(t) || t == mpm::WallType::periodic)
+                {
+                    FatalErrorInFunction
+                        << "Patch " << pp.name() << " is " << mpm::wallTypeName(t)
+                        << " but its face " << facei << " at " << fc << " is "
+                        << "not on a side of the MPM lattice's box "
+                        << "(origin " << point(L.origin[0], L.origin[1], L.origin[2])
+                        << ", h " << L.h << "): outlets, inlets and periodic"
+                        << " patches must lie on its sides for now" << exit(FatalError);
+                }
+                offBox[pp.index()].append(pp.start() + facei);
+                continue;
+            }
             const int a = side/2, a1 = (a + 1) % 3, a2 = (a + 2) % 3;
             const int lo = min(a1, a2), hi = max(a1, a2);
-            spec.faceCondition[side][size_t(ijk[lo]) + size_t(L.nCells[lo])*ijk[hi]] = condition;
+            auto& fcs = spec.faceCondition[side];
+            if (ml.cellsAreNodes())
+            {
+                label ijk[3];
+                ml.indicesOf(fc, ijk);
+                fcs[size_t(ijk[lo]) + size_t(L.nCells[lo])*ijk[hi]] = condition;
+                continue;
+            }
+            // The lattice's faces whose centres this face covers (a face
+            // of a graded mesh may span several, or a part of one)
+            const boundBox fb(pp.localPoints(), pp.localFaces()[facei], false);
+            auto range = [&](int ax, label& i0, label& i1)
+            {
+                if (!L.solved[ax]) { i0 = 0; i1 = 0; return; }
+                const scalar s0 = (fb.min()[ax] - L.origin[ax])/L.h - 0.5;
+                const scalar s1 = (fb.max()[ax] - L.origin[ax])/L.h - 0.5;
+                i0 = max(label(0), label(std::ceil(s0 - 1e-9)));
+                i1 = min(label(L.nCells[ax] - 1), label(std::floor(s1 + 1e-9)));
+            };
+            label l0, l1, h0, h1;
+            range(lo, l0, l1);
+            range(hi, h0, h1);
+            for (label j = h0; j <= h1; ++j)
+            for (label i = l0; i <= l1; ++i)
+            {
+                fcs[size_t(i) + size_t(L.nCells[lo])*j] = condition;
+            }
         }
+    }
+    if (!ml.cellsAreNodes())
+    {
+        // Lattice faces no patch covers lie beyond the mesh (its box
+        // reaches past the bounding box): nothing reaches them
+        label uncovered = 0;
+        for (auto& fcs : spec.faceCondition) for (const int c : fcs) uncovered += c < 0;
+        if (uncovered)
+        {
+            const label outside = label(spec.conditions.size());
+            spec.conditions.push_back(mpm::WallCondition{});
+            names.append("beyondMesh");
+            for (auto& fcs : spec.faceCondition) for (int& c : fcs) if (c < 0) c = outside;
+        }
+        readPatchWalls(mesh, spec, patchCondition, offBox, patchWalls);
     }
 
     for (int side = 0; side < 6; ++side)

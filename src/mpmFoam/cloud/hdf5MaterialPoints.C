@@ -411,7 +411,7 @@ void Foam::hdf5MaterialPoints::distribute(mpm::Particles& P) const
     const mpm::Lattice& L = lattice_.lattice();
     const label nCells = label(L.nCells[0])*L.nCells[1]*L.nCells[2];
     labelList owner(nCells, -1);
-    for (const auto& r : lattice_.cellIndices())
+    for (const auto& r : lattice_.ownedLatticeCells())
     {
         owner[L.cellIndex(r[0], r[1], r[2])] = Pstream::myProcNo();
     }

@@ -192,9 +192,7 @@ void Foam::writeMaterialPoints
     for (label p = 0; p < n; ++p)
     {
         const point x(points.x[0][p], points.x[1][p], points.x[2][p]);
-        label ijk[3];
-        ml.indicesOf(x, ijk);
-        const label celli = ml.cellOf(ijk[0], ijk[1], ijk[2]);
+        const label celli = ml.fvCellOf(x);
         if (celli < 0)
         {
             FatalErrorInFunction

@@ -26,7 +26,7 @@ Foam::mpmControls::mpmControls(const fvMesh& mesh, const dictionary& d)
             "shapeFunction", "transfer", "flipRatio", "stressUpdate",
             "massMatrix", "consistentMassIterations", "freezePositions",
             "logInterval", "threadMinLoopSize", "timeStep",
-            "materials", "walls", "coupling", "pointOutput", "diagnostics",
+            "lattice", "materials", "walls", "obstacles", "coupling", "pointOutput", "diagnostics",
             "accuracyFront", "backend"
         },
         "mpmProperties"

@@ -54,6 +54,16 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     terms_(mesh.nCells())
 {
     const dictionary& mpmDict = mpm.dict();
+    if (!mpm.lattice().cellsAreNodes())
+    {
+        FatalErrorInFunction
+            << "A fluid on a mesh that is not a uniform Cartesian box is not"
+            << " supported yet: the MPM lattice is then its own, and the"
+            << " exchange between it and the fluid's cells is not written."
+            << nl << "Mesh the coupled case as a uniform box (blockMesh, one"
+            << " block, no grading), or remove constant/transportProperties"
+            << " for a pure MPM run." << exit(FatalError);
+    }
     if (!mpmDict.isDict("coupling"))
     {
         FatalIOErrorInFunction(mpmDict)

@@ -1,15 +1,99 @@
 #include "meshLattice.H"
 #include "cellModel.H"
 #include "boundBox.H"
+#include "choice.H"
+#include "knownKeywords.H"
+#include "OStringStream.H"
 
-Foam::meshLattice::meshLattice(const fvMesh& mesh)
+Foam::meshLattice::meshLattice(const fvMesh& mesh, const dictionary& mpmDict)
 :
     mesh_(mesh)
 {
-    build();
+    build(mpmDict);
 }
 
-void Foam::meshLattice::build()
+bool Foam::meshLattice::uniformBox(vector& h0, std::string& why) const
+{
+    const cellModel& hex = cellModel::ref(cellModel::HEX);
+    const cellShapeList& shapes = mesh_.cellShapes();
+    const pointField& pts = mesh_.points();
+    OStringStream os;
+    // This rank's cells: hexes, axis-aligned boxes, all of one size
+    vector hMin(vector::uniform(GREAT)), hMax(vector::uniform(-GREAT));
+    forAll(shapes, celli)
+    {
+        const point& c = mesh_.cellCentres()[celli];
+        if (shapes[celli].model() != hex)
+        {
+            os << "cell " << celli << " at " << c << " is a "
+               << shapes[celli].model().name();
+            break;
+        }
+        const boundBox cb(pointField(pts, shapes[celli]), false);
+        const vector span = cb.span();
+        const scalar boxVol = span.x()*span.y()*span.z();
+        if (mag(boxVol - mesh_.cellVolumes()[celli]) > 1e-6*boxVol)
+        {
+            os << "cell " << celli << " at " << c << " is not an axis-aligned box";
+            break;
+        }
+        hMin = min(hMin, span);
+        hMax = max(hMax, span);
+        // The spacing is this rank's first cell's, as it always was (the
+        // cells' spans differ in the last bit)
+        if (celli == 0) h0 = span;
+    }
+    reduce(hMin, minOp<vector>());
+    reduce(hMax, maxOp<vector>());
+    // The first rank with a reason gives it
+    List<string> reasons(Pstream::nProcs());
+    reasons[Pstream::myProcNo()] = os.str();
+    Pstream::gatherList(reasons);
+    Pstream::scatterList(reasons);
+    for (const string& r : reasons)
+    {
+        if (r.empty()) continue;
+        why = r;
+        return false;
+    }
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (mag(hMax[d] - hMin[d]) > 1e-6*mag(hMin[d]))
+        {
+            why = "its cells are graded (sizes from " + Foam::name(hMin)
+                + " to " + Foam::name(hMax) + ")";
+            return false;
+        }
+    }
+    const Vector<label>& solD = mesh_.solutionD();
+    scalar h = -1;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (solD[d] < 0) continue;
+        if (h < 0) h = h0[d];
+        if (mag(h0[d] - h) > 1e-6*h)
+        {
+            why = "its cells are not cubic (" + Foam::name(h0) + ")";
+            return false;
+        }
+    }
+    const boundBox bb(pts, true);
+    label n = 1;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (solD[d] < 0) continue;
+        n *= label(std::round(bb.span()[d]/h));
+    }
+    if (n != returnReduce(mesh_.nCells(), sumOp<label>()))
+    {
+        why = "it does not fill its bounding box " + Foam::name(bb.min())
+            + " " + Foam::name(bb.max()) + " with cells";
+        return false;
+    }
+    return true;
+}
+
+void Foam::meshLattice::build(const dictionary& mpmDict)
 {
     const label empty = returnReduce
     (
@@ -22,52 +106,166 @@ void Foam::meshLattice::build()
             << " processors, or give every processor cells (method scotch"
             << " or hierarchical)" << exit(FatalError);
     }
-    const cellModel& hex = cellModel::ref(cellModel::HEX);
-    const cellShapeList& shapes = mesh_.cellShapes();
-    const pointField& pts = mesh_.points();
-    const boundBox bb(pts, true);   // the whole domain when decomposed
-    const Vector<label>& solD = mesh_.solutionD();
-
-    // Cell size from the first cell; every other cell must match it.
+    const dictionary& ld = optionalSubDict(mpmDict, "lattice");
+    checkKeywords(ld, {"spacing"}, "lattice");
     vector h0(Zero);
-    forAll(shapes, celli)
+    const bool box = uniformBox(h0, ownReason_);
+    const Vector<label>& solD = mesh_.solutionD();
+    scalar hBox = -1;
+    for (direction d = 0; d < 3 && hBox < 0; ++d) if (solD[d] > 0) hBox = h0[d];
+    if (hBox < 0)
     {
-        if (shapes[celli].model() != hex)
+        FatalErrorInFunction << "Mesh has no solved direction" << exit(FatalError);
+    }
+    if (ld.found("spacing"))
+    {
+        const scalar h = readBounded(ld, "spacing", 0, numberRange{0, GREAT, false}, false);
+        if (box && mag(h - hBox) <= 1e-6*hBox)
         {
-            FatalErrorInFunction
-                << "MPM needs a uniform Cartesian hex mesh, but cell " << celli
-                << " at " << mesh_.cellCentres()[celli] << " is a "
-                << shapes[celli].model().name() << nl
-                << "Use blockMesh with one hex block and uniform grading."
-                << exit(FatalError);
+            buildFromCells(h0);
+            return;
         }
-        const boundBox cb(pointField(pts, shapes[celli]), false);
-        const vector span = cb.span();
-        const scalar boxVol = span.x()*span.y()*span.z();
-        if (mag(boxVol - mesh_.cellVolumes()[celli]) > 1e-6*boxVol)
+        if (box) ownReason_ = "lattice spacing " + Foam::name(h) + " differs from the cells' " + Foam::name(hBox);
+        cellsAreNodes_ = false;
+        buildOwn(h);
+        Info<< "MPM lattice: its own, spacing " << h << " (lattice spacing)"
+            << nl << "    (" << ownReason_.c_str() << ")" << nl;
+        return;
+    }
+    if (box)
+    {
+        buildFromCells(h0);
+        return;
+    }
+    // Default: the mesh's mean cell size in the solved directions, so that
+    // the lattice has about as many cells within the mesh as the mesh
+    const scalar volume = returnReduce(sum(mesh_.cellVolumes()), sumOp<scalar>());
+    const label nCells = returnReduce(mesh_.nCells(), sumOp<label>());
+    const boundBox bb(mesh_.points(), true);
+    scalar thickness = 1;
+    label dim = 0;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (solD[d] > 0) ++dim; else thickness *= bb.span()[d];
+    }
+    const scalar h = std::pow(volume/thickness/nCells, 1.0/dim);
+    cellsAreNodes_ = false;
+    buildOwn(h);
+    Info<< "MPM lattice: its own, spacing " << h << " (default: the mesh's mean"
+        << " cell size; set lattice { spacing ...; } in mpmProperties)" << nl
+        << "    (the mesh is not a uniform box: " << ownReason_.c_str() << ")" << nl;
+}
+
+void Foam::meshLattice::buildOwn(scalar h)
+{
+    const boundBox bb(mesh_.points(), true);
+    const Vector<label>& solD = mesh_.solutionD();
+    lattice_.h = h;
+    unsolvedSpan_ = bb.span();
+    cellVolume_ = 1;
+    for (direction d = 0; d < 3; ++d)
+    {
+        lattice_.solved[d] = solD[d] > 0;
+        lattice_.origin[d] = bb.min()[d];
+        const scalar len = bb.span()[d];
+        // Whole cells over the bounding box: its min faces are the
+        // lattice's, its max faces too where the length is a multiple
+        lattice_.nCells[d] = lattice_.solved[d]
+          ? max(label(1), label(std::ceil(len/h - 1e-6))) : 1;
+        cellVolume_ *= lattice_.solved[d] ? h : len;
+    }
+    lattice_.pad = 2;
+    try
+    {
+        lattice_.finalise();
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction
+            << e.what() << " (lattice spacing " << h << " over the mesh's"
+            << " bounding box " << bb << ": give a smaller lattice spacing)"
+            << exit(FatalError);
+    }
+    cellNode_.setSize(mesh_.nCells());
+    cellIjk_.resize(mesh_.nCells());
+    forAll(mesh_.cellCentres(), celli)
+    {
+        label ijk[3];
+        indicesOf(mesh_.cellCentres()[celli], ijk);
+        cellIjk_[celli] = {int(ijk[0]), int(ijk[1]), int(ijk[2])};
+        cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
+    }
+    if (Pstream::parRun()) decomposeOwn();
+}
+
+void Foam::meshLattice::decomposeOwn()
+{
+    // Each rank claims the lattice cells whose centres its cells hold (on a
+    // shared face the higher rank, as maxEqOp combines)
+    const label n = label(lattice_.nRealNodes);
+    latticeOwner_.setSize(n, -1);
+    const boundBox local(mesh_.points(), false);
+    label lo[3], hi[3];
+    indicesOf(local.min(), lo);
+    indicesOf(local.max(), hi);
+    for (label k = lo[2]; k <= hi[2]; ++k)
+    for (label j = lo[1]; j <= hi[1]; ++j)
+    for (label i = lo[0]; i <= hi[0]; ++i)
+    {
+        const label lin = lattice_.cellIndex(i, j, k);
+        if (mesh_.findCell(cellCentre(lin)) >= 0) latticeOwner_[lin] = Pstream::myProcNo();
+    }
+    Pstream::listCombineGather(latticeOwner_, maxEqOp<label>());
+    Pstream::listCombineScatter(latticeOwner_);
+    // Lattice cells outside the mesh (walls, the box's corners) take the
+    // owner of a neighbour, breadth first from the claimed cells in index
+    // order: the same on every rank. Their nodes carry the walls' mass.
+    DynamicList<label> front;
+    forAll(latticeOwner_, lin) if (latticeOwner_[lin] >= 0) front.append(lin);
+    if (front.empty())
+    {
+        FatalErrorInFunction
+            << "No lattice cell centre lies in a cell of the mesh: the lattice"
+            << " spacing " << lattice_.h << " is too coarse" << exit(FatalError);
+    }
+    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
+    for (label f = 0; f < front.size(); ++f)
+    {
+        const label lin = front[f];
+        const label r[3] = {lin % n0, (lin/n0) % n1, lin/(n0*n1)};
+        for (direction a = 0; a < 3; ++a)
         {
-            FatalErrorInFunction
-                << "MPM needs axis-aligned box cells, but cell " << celli
-                << " at " << mesh_.cellCentres()[celli] << " has volume "
-                << mesh_.cellVolumes()[celli] << " while its bounding box has "
-                << boxVol << " (skewed or rotated cell)."
-                << exit(FatalError);
-        }
-        if (celli == 0) h0 = span;
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            if (mag(span[d] - h0[d]) > 1e-6*mag(h0[d]))
+            if (!lattice_.solved[a]) continue;
+            for (const label s : {-1, 1})
             {
-                FatalErrorInFunction
-                    << "MPM needs a uniform mesh, but cell " << celli
-                    << " at " << mesh_.cellCentres()[celli] << " has size " << span
-                    << " while cell 0 has size " << h0 << nl
-                    << "Remove grading (simpleGrading (1 1 1)) and use one "
-                    << "block." << exit(FatalError);
+                label q[3] = {r[0], r[1], r[2]};
+                q[a] += s;
+                if (q[a] < 0 || q[a] >= lattice_.nCells[a]) continue;
+                const label nb = lattice_.cellIndex(q[0], q[1], q[2]);
+                if (latticeOwner_[nb] >= 0) continue;
+                latticeOwner_[nb] = latticeOwner_[lin];
+                front.append(nb);
             }
         }
     }
+    labelList count(Pstream::nProcs(), Zero);
+    for (const label o : latticeOwner_) ++count[o];
+    Info<< "MPM lattice decomposition: lattice cells per processor " << count
+        << " (each owns the cells whose centres its mesh cells hold)" << nl;
+    if (min(count) == 0)
+    {
+        FatalErrorInFunction
+            << "Processor " << findMin(count) << " owns no lattice cell (its"
+            << " mesh cells hold no lattice cell centre): decompose for fewer"
+            << " processors or choose a smaller lattice spacing" << exit(FatalError);
+    }
+}
 
+void Foam::meshLattice::buildFromCells(const vector& h0)
+{
+    const pointField& pts = mesh_.points();
+    const boundBox bb(pts, true);   // the whole domain when decomposed
+    const Vector<label>& solD = mesh_.solutionD();
     scalar h = -1;
     for (direction d = 0; d < vector::nComponents; ++d)
     {
@@ -75,18 +273,6 @@ void Foam::meshLattice::build()
         lattice_.origin[d] = bb.min()[d];
         if (!lattice_.solved[d]) continue;
         if (h < 0) h = h0[d];
-        if (mag(h0[d] - h) > 1e-6*h)
-        {
-            FatalErrorInFunction
-                << "MPM needs cubic (square in 2D) cells, but the cells are "
-                << h0 << " in the solved directions " << solD << nl
-                << "Choose the cell counts so that every solved direction "
-                << "has the same spacing." << exit(FatalError);
-        }
-    }
-    if (h < 0)
-    {
-        FatalErrorInFunction << "Mesh has no solved direction" << exit(FatalError);
     }
     lattice_.h = h;
     unsolvedSpan_ = bb.span();
@@ -116,14 +302,6 @@ void Foam::meshLattice::build()
     {
         FatalErrorInFunction << e.what() << exit(FatalError);
     }
-    if (lattice_.nRealNodes != returnReduce(mesh_.nCells(), sumOp<label>()))
-    {
-        FatalErrorInFunction
-            << "MPM needs the mesh to fill its bounding box " << bb
-            << " with cells of size " << h << ": expected "
-            << lattice_.nRealNodes << " cells, found " << returnReduce(mesh_.nCells(), sumOp<label>())
-            << exit(FatalError);
-    }
 
     cellNode_.setSize(mesh_.nCells());
     cellIjk_.resize(mesh_.nCells());
@@ -144,6 +322,39 @@ void Foam::meshLattice::build()
         latticeCell_.set(lin, celli);
         cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
     }
+}
+
+std::vector<std::array<int, 3>> Foam::meshLattice::ownedLatticeCells() const
+{
+    if (cellsAreNodes_) return cellIjk_;
+    std::vector<std::array<int, 3>> mine;
+    for (int k = 0; k < lattice_.nCells[2]; ++k)
+    for (int j = 0; j < lattice_.nCells[1]; ++j)
+    for (int i = 0; i < lattice_.nCells[0]; ++i)
+    {
+        if (ownsLatticeCell(label(lattice_.cellIndex(i, j, k)))) mine.push_back({i, j, k});
+    }
+    return mine;
+}
+
+bool Foam::meshLattice::ownsLatticeCell(label i, label j, label k) const
+{
+    return ownsLatticeCell(label(lattice_.cellIndex(i, j, k)));
+}
+
+Foam::label Foam::meshLattice::fvCellOf(const point& x) const
+{
+    if (cellsAreNodes_)
+    {
+        label ijk[3];
+        indicesOf(x, ijk);
+        return cellOf(ijk[0], ijk[1], ijk[2]);
+    }
+    const label celli = mesh_.findCell(x);
+    // Containment keeps a point on a wall's surface, a hair outside it may
+    // be judged outside the mesh (serially: decomposed, the nearest cell of
+    // this rank may be far from another rank's point)
+    return celli >= 0 || Pstream::parRun() ? celli : mesh_.findNearestCell(x);
 }
 
 void Foam::meshLattice::attach(const std::shared_ptr<const mpm::Subdomain>& subdomain)
@@ -171,7 +382,8 @@ Foam::point Foam::meshLattice::cellCentre(label globalCell) const
 
 bool Foam::meshLattice::ownsLatticeCell(label globalCell) const
 {
-    return latticeCell_.found(globalCell);
+    if (cellsAreNodes_) return latticeCell_.found(globalCell);
+    return latticeOwner_.empty() || latticeOwner_[globalCell] == Pstream::myProcNo();
 }
 
 Foam::label Foam::meshLattice::cellOf(label i, label j, label k) const
@@ -193,6 +405,11 @@ void Foam::meshLattice::report(Ostream& os) const
 {
     os  << "MPM lattice: " << lattice_.dim << "D, h = " << lattice_.h
         << ", cells (" << lattice_.nCells[0] << ' ' << lattice_.nCells[1]
-        << ' ' << lattice_.nCells[2] << "), nodes at cell centres, "
-        << lattice_.pad << " ghost layers" << nl;
+        << ' ' << lattice_.nCells[2] << "), ";
+    if (!cellsAreNodes_)
+    {
+        os  << "origin " << point(lattice_.origin[0], lattice_.origin[1], lattice_.origin[2])
+            << ", its own (not the mesh's cells), ";
+    }
+    os  << "nodes at cell centres, " << lattice_.pad << " ghost layers" << nl;
 }

@@ -1,6 +1,7 @@
 #include "mpmModel.H"
 #include "choice.H"
 #include "wallConditions.H"
+#include "obstacles.H"
 #include "Time.H"
 #include "clockTime.H"
 #include "floatingPointTraps.H"
@@ -19,7 +20,7 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
         IOobject("mpmProperties", mesh.time().constant(), mesh,
             IOobject::MUST_READ, IOobject::NO_WRITE)
     ),
-    lattice_(mesh),
+    lattice_(mesh, dict_),
     materials_(dict_),
     controls_(mesh, dict_),
     alphaSolid_
@@ -42,14 +43,34 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     reportCourantLimit();
     suspendPoolThreadTraps();
     wordList conditionPatch;
-    const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_, conditionPatch));
+    std::vector<mpm::LevelSetWall> patchWalls;
+    const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_, conditionPatch, patchWalls));
     system_.setup(lattice_.lattice(), walls, controls_.step, decompose(walls));
+    setLevelSetWalls(std::move(patchWalls));
     for (label m = 0; m < materials_.size(); ++m)
     {
         system_.materials().push_back(materials_.create(m));
     }
 
     pointFormat_ = materialPointsFormat::New(dict_, mesh, lattice_, comm_, materials_.names());
+    if
+    (
+        !lattice_.cellsAreNodes() && Pstream::parRun()
+     && dict_.getOrDefault<word>("pointOutput", "foam") == "foam"
+    )
+    {
+        // A point belongs to the rank owning its lattice cell, which may
+        // not hold the mesh cell around it: the lagrangian cloud, written
+        // per processor's cells, cannot place it
+        FatalIOErrorInFunction(dict_)
+            << "A decomposed run on a mesh that is not a uniform box writes"
+            << " its points with pointOutput hdf5 (one file for all ranks);"
+            << " the lagrangian cloud (pointOutput foam) needs each point on"
+            << " the processor of its mesh cell." << nl
+            << "Add pointOutput hdf5; to constant/mpmProperties (the seeded"
+            << " cloud at time 0 is still read), or run serially."
+            << exit(FatalIOError);
+    }
     {
         const clockTime timer;
         pointFormat_->read(system_.particles());
@@ -68,6 +89,7 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
                 << exit(FatalError);
         }
     }
+    checkPointsOutsideObstacles();
     const label outside = returnReduce(label(system_.countOutside()), sumOp<label>());
     if (outside)
     {
@@ -126,7 +148,7 @@ std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
     {
         sd->build
         (
-            lattice_.lattice(), lattice_.cellIndices(), reach,
+            lattice_.lattice(), lattice_.ownedLatticeCells(), reach,
             mpm::Boundary::periodicAxes(lattice_.lattice(), walls), comm_
         );
     }
@@ -345,11 +367,26 @@ void Foam::mpmModel::updateFields()
 {
     const mpm::GridState& g = system_.grid();
     const labelList& node = lattice_.cellNode();
+    // A uniform box's cell is its node's lattice cell; any other mesh's
+    // cell samples the lattice cell holding its centre
+    const bool same = lattice_.cellsAreNodes();
+    // Decomposed, the lattice cell may be another rank's: its halo copy
+    // here holds the owner's values once they are sent (the velocity is)
+    if (!same && Pstream::parRun()) system_.copyMassToHalo();
     forAll(node, celli)
     {
-        alphaSolid_[celli] = g.volume[node[celli]]/mesh_.cellVolumes()[celli];
-        Usolid_[celli] = vector(g.velocity[0][node[celli]],
-            g.velocity[1][node[celli]], g.velocity[2][node[celli]]);
+        const label I = node[celli];
+        if (I < 0)
+        {
+            // Beyond this rank's box (a mesh cell much smaller than the
+            // lattice's, far from the lattice cells this rank owns)
+            alphaSolid_[celli] = 0;
+            Usolid_[celli] = Zero;
+            continue;
+        }
+        alphaSolid_[celli] = g.volume[I]
+           /(same ? mesh_.cellVolumes()[celli] : lattice_.cellVolume());
+        Usolid_[celli] = vector(g.velocity[0][I], g.velocity[1][I], g.velocity[2][I]);
     }
     alphaSolid_.correctBoundaryConditions();
     Usolid_.correctBoundaryConditions();
@@ -375,6 +412,59 @@ bool Foam::mpmModel::logThisStep() const
     return steps_ % controls_.logInterval == 0;
 }
 
+void Foam::mpmModel::setLevelSetWalls(std::vector<mpm::LevelSetWall> walls)
+{
+    for (mpm::LevelSetWall& w : readObstacles(mesh_, dict_)) walls.push_back(std::move(w));
+    if (walls.empty()) return;
+    // The shapes see a 2D case's mid-plane along its unsolved axis
+    const point mid(lattice_.cellCentre(0));
+    try
+    {
+        system_.setLevelSetWalls(std::move(walls), {mid.x(), mid.y(), mid.z()});
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalIOErrorInFunction(dict_) << e.what() << exit(FatalIOError);
+    }
+    Info<< "    lattice nodes inside level-set walls and obstacles: "
+        << returnReduce(label(system_.levelSetWalls().nodesInside()), sumOp<label>())
+        << (Pstream::parRun() ? " (summed over the processors' boxes)" : "") << nl;
+}
+
+void Foam::mpmModel::checkPointsOutsideObstacles() const
+{
+    const mpm::LevelSetWalls& ls = system_.levelSetWalls();
+    if (ls.empty()) return;
+    // A run keeps every point outside the closest-point planes of the
+    // nodes; a concave wall (an STL's hollow) can leave a point a hair
+    // inside the exact surface, so a restart allows a quarter cell.
+    const scalar depth = 0.25*lattice_.lattice().h;
+    const mpm::Particles& P = system_.particles();
+    List<label> inside(ls.walls().size(), Zero);
+    for (mpm::Index p = 0; p < P.size(); ++p)
+    {
+        const mpm::Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
+        int w = -1;
+        if (ls.distance(x, &w) < -depth) ++inside[w];
+    }
+    Pstream::listCombineGather(inside, plusEqOp<label>());
+    Pstream::listCombineScatter(inside);
+    std::string which;
+    forAll(inside, w)
+    {
+        if (inside[w] == 0) continue;
+        which += " " + std::to_string(inside[w]) + " in " + ls.walls()[w].name;
+    }
+    if (!which.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Material points lie inside obstacles:" << which.c_str() << nl
+            << "Seed again with mpmSetParticles (it leaves out points inside"
+            << " obstacles and outside the mesh), or move the obstacle."
+            << exit(FatalIOError);
+    }
+}
+
 void Foam::mpmModel::report(Ostream& os)
 {
     forAll(diagnostics_, i)
@@ -384,6 +474,11 @@ void Foam::mpmModel::report(Ostream& os)
     }
     reportBalance(os);
     open_->report(system_, os);
+    if (!system_.levelSetWalls().empty())
+    {
+        os  << "Obstacles: points put back on their surface so far "
+            << returnReduce(label(system_.levelSetContainedCount()), sumOp<label>()) << nl;
+    }
 }
 
 void Foam::mpmModel::summary

@@ -48,7 +48,7 @@ std::vector<label> sourceCells(const meshLattice& ml)
     const mpm::Lattice& L = ml.lattice();
     const int layer = Pstream::parRun() ? 1 : 0;
     std::vector<label> cells;
-    for (const auto& r : ml.cellIndices())
+    for (const auto& r : ml.ownedLatticeCells())
     {
         for (int dk = -layer; dk <= layer; ++dk)
         for (int dj = -layer; dj <= layer; ++dj)
@@ -379,6 +379,19 @@ Foam::label Foam::seedRegions
         }
         List<volumeType> inside;
         surf->getVolumeType(candidates, inside);
+        if (!ml.cellsAreNodes())
+        {
+            // The lattice is its own: its cells reach beyond the mesh
+            label outsideMesh = 0;
+            forAll(candidates, i)
+            {
+                if (inside[i] != volumeType::INSIDE || mesh.findCell(candidates[i]) >= 0) continue;
+                inside[i] = volumeType::OUTSIDE;
+                ++outsideMesh;
+            }
+            Info<< "    left out " << returnReduce(outsideMesh, sumOp<label>())
+                << " points outside the mesh" << nl;
+        }
 
         // Points per source cell, counted by the rank owning it; their
         // global prefix numbers the points.
@@ -408,7 +421,7 @@ Foam::label Foam::seedRegions
                 const point& x = candidates[i];
                 label ijk[3];
                 ml.indicesOf(x, ijk);
-                if (ml.cellOf(ijk[0], ijk[1], ijk[2]) < 0) continue;   // another rank's
+                if (!ml.ownsLatticeCell(ijk[0], ijk[1], ijk[2])) continue;   // another rank's
                 const vector v(velocity(x));
                 const mpm::Index p = points.add
                 (

@@ -1,0 +1,166 @@
+// Walls of any shape, as a level set on the lattice nodes.
+//
+// Each wall is a shape (a plane, a sphere, a cylinder, a box, or an STL
+// surface from the OpenFOAM layer) that gives the signed distance of a
+// position to its surface: positive on the material's side, negative inside
+// the wall. At setup every node of the lattice stores the distance to the
+// nearest wall, that wall's unit normal (pointing into the material's side)
+// and which wall it is: a node's closest-point plane. The step then needs no
+// geometry, only these node arrays, so the same kernel bodies run on every
+// back-end (kernels/levelSetWall.hpp):
+//   * the node condition: a node inside a wall (phi < 0; linear hats:
+//     phi < h/2, below) that carries
+//     material gets the wall's condition on its updated velocity (noSlip:
+//     zero; slip and friction: unilateral, only while the node approaches
+//     the wall; friction: Coulomb, the tangential speed reduced by mu times
+//     the normal speed removed);
+//   * containment: a point that ends a step inside a wall is put back on
+//     its surface along the normal, its approaching normal velocity removed.
+//     A point is tested against the closest-point planes of the nodes
+//     around it, so a convex wall is never entered (its tangent planes all
+//     hold it outside). Counted, per rank.
+// Level-set walls are independent of the box's mirrored walls
+// (grid/boundary.hpp) and act together with them. docs/geometry.md.
+#pragma once
+#include "boundary.hpp"
+#include "lattice.hpp"
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+// A wall surface: the signed distance from x, positive on the material's
+// side, and the unit normal of the nearest surface point pointing into the
+// material's side. Beyond `band` from the surface a shape may return any
+// distance of at least band in magnitude, with the right sign, and any unit
+// normal (only nodes near a wall need their plane).
+class WallShape
+{
+public:
+    virtual ~WallShape() = default;
+    virtual Real distance(const Real x[3], Real normal[3], Real band) const = 0;
+    // One line for the log
+    virtual std::string describe() const = 0;
+    // Walls of one group are parts of one surface that share its sign (a
+    // mesh's wall patches): the nearest part gives the distance. Separate
+    // groups (obstacles) are solids: the smallest distance wins (inside
+    // any, the deepest). Each shape is its own group unless it says so.
+    virtual const void* group() const { return this; }
+};
+
+// A plane: the material lies on the side its normal points to.
+class HalfSpaceShape : public WallShape
+{
+public:
+    HalfSpaceShape(const std::array<Real, 3>& point, const std::array<Real, 3>& normal);
+    Real distance(const Real x[3], Real normal[3], Real band) const override;
+    std::string describe() const override;
+private:
+    std::array<Real, 3> p_, n_;
+};
+
+// A solid ball; the material is outside it.
+class SphereShape : public WallShape
+{
+public:
+    SphereShape(const std::array<Real, 3>& centre, Real radius);
+    Real distance(const Real x[3], Real normal[3], Real band) const override;
+    std::string describe() const override;
+private:
+    std::array<Real, 3> c_;
+    Real r_;
+};
+
+// A solid cylinder of radius r between the end centres p0 and p1 (flat
+// ends); the material is outside it.
+class CylinderShape : public WallShape
+{
+public:
+    CylinderShape(const std::array<Real, 3>& p0, const std::array<Real, 3>& p1, Real radius);
+    Real distance(const Real x[3], Real normal[3], Real band) const override;
+    std::string describe() const override;
+private:
+    std::array<Real, 3> p0_, axis_;
+    Real length_, r_;
+};
+
+// A solid axis-aligned box [min, max]; the material is outside it.
+class BoxShape : public WallShape
+{
+public:
+    BoxShape(const std::array<Real, 3>& min, const std::array<Real, 3>& max);
+    Real distance(const Real x[3], Real normal[3], Real band) const override;
+    std::string describe() const override;
+private:
+    std::array<Real, 3> lo_, hi_;
+};
+
+struct LevelSetWall
+{
+    std::string name;
+    std::shared_ptr<const WallShape> shape;
+    // noSlip, slip or friction (with its frictionCoefficient)
+    WallCondition condition;
+};
+
+// The node arrays the kernels read (raw pointers: copyable to a device).
+struct LevelSetView
+{
+    const Real* phi = nullptr;          // signed distance at each node
+    const Real* normal[3] = {};         // into the material's side
+    const int* wall = nullptr;          // the nearest wall's index
+    const int* type = nullptr;          // per wall: WallType as int
+    const Real* mu = nullptr;           // per wall: Coulomb coefficient
+    Real band = 0;                      // beyond it phi is only a bound
+    Real contact = 0;                   // nodes with phi below it are held
+    explicit operator bool() const { return phi != nullptr; }
+};
+
+class LevelSetWalls
+{
+public:
+    // The node planes of every node of L (ghost layers included).
+    // unsolved: the coordinate given to the shapes along unsolved axes (a
+    // 2D case's mid-plane). Throws std::invalid_argument for a wall whose
+    // condition is not noSlip, slip or friction, or without a shape.
+    // contact: nodes with phi below it get the wall condition (0: the
+    // nodes inside the walls; see MpmSystem::setLevelSetWalls).
+    void build
+    (
+        const Lattice& L, std::vector<LevelSetWall> walls, const std::array<Real, 3>& unsolved,
+        Real contact = 0
+    );
+
+    bool empty() const { return walls_.empty(); }
+    const std::vector<LevelSetWall>& walls() const { return walls_; }
+    // Empty view (false) without walls
+    LevelSetView view() const;
+
+    // The exact signed distance to the nearest wall at x (min over the
+    // shapes), for checks of seeded points; wall: which one (or -1)
+    Real distance(const Real x[3], int* wall = nullptr) const;
+
+    const std::vector<Real>& phi() const { return phi_; }
+
+    // The signed distance at x and the nearest wall's normal and index,
+    // combining the walls by groups (WallShape::group)
+    Real nearest(const Real x[3], Real band, Real normal[3], int& wall) const;
+
+    // Nodes inside walls (phi < 0) of the lattice, for the log
+    Index nodesInside() const { return nInside_; }
+
+private:
+    std::vector<LevelSetWall> walls_;
+    std::vector<Real> phi_;
+    std::array<std::vector<Real>, 3> normal_;
+    std::vector<int> wall_;
+    std::vector<int> type_;
+    std::vector<Real> mu_;
+    Real band_ = 0;
+    Real contact_ = 0;
+    Index nInside_ = 0;
+};
+
+} // namespace mpm

@@ -1,0 +1,114 @@
+// Kernel bodies of the level-set walls (grid/levelSet.hpp): the wall
+// condition on one node's updated velocity, and the containment of one point
+// after it moved. Both read only the node arrays of the level set, so they
+// run unchanged on every back-end.
+#pragma once
+#include "../grid/boundary.hpp"
+#include "../grid/lattice.hpp"
+#include "../grid/levelSet.hpp"
+#include "views.hpp"
+#include <cmath>
+
+namespace mpm {
+
+// A node inside a wall (phi < 0) with material: noSlip stops it; slip and
+// friction act only while it approaches the wall (v.n < 0, n into the
+// material's side), removing the normal speed; friction then reduces the
+// tangential speed by mu times the normal speed removed (the wall's normal
+// impulse per unit mass in this step), never reversing it. Summed over the
+// nodes in contact, the normal impulse is the load the wall carries, so a
+// body sliding on a level-set wall feels mu times its normal load.
+MPM_HOST_DEVICE inline void levelSetWallNode
+(
+    const LevelSetView& ls, const Real* mass, Real* const v[3], Real massTolerance, Index I
+)
+{
+    if (!(ls.phi[I] < ls.contact) || mass[I] <= massTolerance) return;
+    const int w = ls.wall[I];
+    if (ls.type[w] == int(WallType::noSlip))
+    {
+        for (int d = 0; d < 3; ++d) v[d][I] = 0;
+        return;
+    }
+    const Real n[3] = {ls.normal[0][I], ls.normal[1][I], ls.normal[2][I]};
+    const Real vn = v[0][I]*n[0] + v[1][I]*n[1] + v[2][I]*n[2];
+    if (vn >= 0) return;   // leaving the wall: unilateral
+    for (int d = 0; d < 3; ++d) v[d][I] -= vn*n[d];
+    if (ls.type[w] != int(WallType::friction)) return;
+    const Real vt = std::sqrt(v[0][I]*v[0][I] + v[1][I]*v[1][I] + v[2][I]*v[2][I]);
+    const Real dv = -ls.mu[w]*vn;
+    const Real scale = vt > dv ? 1 - dv/vt : 0;
+    for (int d = 0; d < 3; ++d) v[d][I] *= scale;
+}
+
+// Signed distance of x from the closest-point plane of node I
+MPM_HOST_DEVICE inline Real levelSetPlaneDistance
+(
+    const Lattice& L, const LevelSetView& ls, const int c[3], Index I, const Real x[3]
+)
+{
+    Real d = ls.phi[I];
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!L.solved[a]) continue;
+        const Real xa = L.origin[a] + (c[a] + 0.5)*L.h;
+        d += ls.normal[a][I]*(x[a] - xa);
+    }
+    return d;
+}
+
+// After a point moved: the most negative distance of its position from the
+// closest-point planes of the 2^dim nodes around it; below zero the point
+// lies inside a wall and is put back on that plane (a hair outside), and
+// its velocity loses the part that approaches the wall. Repeated so that a
+// point in a corner between two walls leaves both. A convex wall lies
+// behind each of its tangent planes, so a point outside them all is outside
+// the wall. Returns whether the point was moved. Points more than a band
+// from every wall cost one load.
+MPM_HOST_DEVICE inline bool levelSetContainPoint
+(
+    const Lattice& L, const LevelSetView& ls, const PointView& P, Index p
+)
+{
+    Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
+    // The cell holding the point (its node is the nearest) and the lower
+    // corner of the 2^dim nodes around it
+    int cell[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!L.solved[a]) continue;
+        const Real s = (x[a] - L.origin[a])/L.h;
+        cell[a] = int(std::floor(s));
+        lo[a] = int(std::floor(s - 0.5));
+        hi[a] = lo[a] + 1;
+        // Stay on the lattice's nodes (ghost layers included)
+        if (lo[a] < -L.pad) lo[a] = -L.pad;
+        if (hi[a] > L.nCells[a] + L.pad - 1) hi[a] = L.nCells[a] + L.pad - 1;
+        if (cell[a] < -L.pad || cell[a] > L.nCells[a] + L.pad - 1) return false;
+    }
+    if (ls.phi[L.realNode(cell[0], cell[1], cell[2])] > ls.band) return false;
+    bool moved = false;
+    for (int pass = 0; pass < 3; ++pass)
+    {
+        Real worst = 0, n[3] = {0, 0, 0};
+        for (int k = lo[2]; k <= hi[2]; ++k)
+        for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i)
+        {
+            const int c[3] = {i, j, k};
+            const Index I = L.realNode(i, j, k);
+            const Real d = levelSetPlaneDistance(L, ls, c, I, x);
+            if (d < worst) { worst = d; for (int a = 0; a < 3; ++a) n[a] = ls.normal[a][I]; }
+        }
+        if (worst >= 0) break;
+        const Real push = -worst + 1e-9*L.h;
+        for (int a = 0; a < 3; ++a) x[a] += push*n[a];
+        const Real vn = P.v[0][p]*n[0] + P.v[1][p]*n[1] + P.v[2][p]*n[2];
+        if (vn < 0) for (int a = 0; a < 3; ++a) P.v[a][p] -= vn*n[a];
+        moved = true;
+    }
+    if (moved) for (int a = 0; a < 3; ++a) P.x[a][p] = x[a];
+    return moved;
+}
+
+} // namespace mpm

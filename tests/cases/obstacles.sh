@@ -1,0 +1,173 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Obstacles (level-set walls, docs/geometry.md) through the solver and the
+# seeding utility, on the elasticDisks box:
+#   * mpmSetParticles leaves out the points a region puts inside an STL
+#     obstacle, and says how many (the count of sub-cell points in the
+#     overlap, worked out here);
+#   * an elastic disk thrown at about one wave speed at a closed STL block
+#     never has a point inside it (exact box geometry) at any written time,
+#     rebounds, and keeps every seeded point and its mass;
+#   * the same run on 2 ranks (scotch) gives the serial positions to 1e-10;
+#   * a sphere obstacle described analytically holds the disk the same way;
+#   * bad input stops with a message naming the obstacle: a missing STL, an
+#     open STL, inward normals, an unknown shape, friction without its
+#     coefficient, points inside an obstacle at start-up.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+
+# stlBox <file> <x0 y0 z0 x1 y1 z1> [open|inward]: a closed box of 12
+# triangles with outward normals (open: two missing; inward: reversed)
+stlBox()
+{
+    "$PY" - "$@" <<'PYEOF'
+import sys
+f, lo, hi = sys.argv[1], [float(v) for v in sys.argv[2:5]], [float(v) for v in sys.argv[5:8]]
+mode = sys.argv[8] if len(sys.argv) > 8 else ""
+c = [[(lo, hi)[(i >> a) & 1][a] for a in range(3)] for i in range(8)]
+quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+tris = []
+for q in quads:
+    tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
+if mode == "open": tris = tris[2:]
+if mode == "inward": tris = [(a, c_, b) for a, b, c_ in tris]
+with open(f, "w") as out:
+    out.write("solid block\n")
+    for t in tris:
+        out.write(" facet normal 0 0 0\n  outer loop\n")
+        for v in t: out.write("   vertex %g %g %g\n" % tuple(c[v]))
+        out.write("  endloop\n endfacet\n")
+    out.write("endsolid block\n")
+PYEOF
+}
+
+c=$(copyTutorial mpm/elasticDisks blockCase)
+mkdir -p "$c/constant/triSurface"
+stlBox "$c/constant/triSurface/block.stl" 0.6 0.2 -1 0.9 0.9 2
+cat >> "$(props "$c")" <<'EOF'
+obstacles
+{
+    block { shape stl; file "block.stl"; type slip; }
+}
+EOF
+cat > "$c/system/mpmSetParticlesDict" <<'DEOF'
+FoamFile { version 2.0; format ascii; class dictionary; object mpmSetParticlesDict; }
+regions
+{
+    disk
+    {
+        type          cylinder;
+        point1        (0.2 0.5 -1);
+        point2        (0.2 0.5  2);
+        radius        0.2;
+        material      disk;
+        pointsPerCell (2 2 1);
+        velocity      { type uniform; value (1.2 0 0); }
+    }
+    strip   // overlaps the block over x 0.6-0.9, y 0.85-0.9: 12 x 2 points
+    {
+        type          box;
+        min           (0.5 0.85 0);
+        max           (1.0 1.0 1);
+        material      disk;
+        pointsPerCell (2 2 1);
+    }
+}
+DEOF
+sed -i 's/^endTime .*/endTime 0.6;/; s/^writeInterval .*/writeInterval 0.1;/' "$c/system/controlDict"
+runApps "$c" blockMesh mpmSetParticles || { echo "FAIL: set-up"; tail -20 "$c/log.mpmSetParticles"; exit 1; }
+left=$(sed -n 's/^Obstacle block: left out \([0-9]*\) points inside it/\1/p' "$c/log.mpmSetParticles")
+check "seeding leaves out the strip's points inside the STL block" "n == 24" n="${left:--1}"
+
+# insideBlock <case>: the largest depth of a point inside the block at any
+# written time, the number of times read and the disk's final mean x speed.
+# The block's faces are where the STL puts them: STL stores single
+# precision (0.6 is read as 0.6000000238).
+insideBlock()
+{
+    "$PY" - "$1" <<'PYEOF'
+import sys, numpy as np, mpmPost
+c = sys.argv[1]
+depth, n = -1.0, 0
+for t in mpmPost.times(c):
+    x = mpmPost.read_cloud_field(c, t, "positions")
+    f = lambda v: float(np.float32(v))
+    d = np.minimum.reduce([x[:, 0] - f(0.6), f(0.9) - x[:, 0], x[:, 1] - f(0.2), f(0.9) - x[:, 1]])
+    depth = max(depth, d.max())
+    n += 1
+v = mpmPost.read_cloud_field(c, mpmPost.times(c)[-1], "U")
+disk = mpmPost.read_cloud_field(c, "0", "positions")[:, 1] < 0.75
+print(depth, n, v[disk, 0].mean())
+PYEOF
+}
+
+runApps "$c" mpmFoam || { echo "FAIL: mpmFoam"; tail -30 "$c/log.mpmFoam"; exit 1; }
+read -r depth nt ux <<< "$(insideBlock "$c")"
+check "STL block: no point inside it at any of $nt written times (deepest: $depth)" "d < 0 and n >= 7" d="$depth" n="$nt"
+check "STL block: the disk rebounded (mean x speed $ux m/s)" "u < 0" u="$ux"
+seededPoints "$c"
+grep -q "^Obstacles: points put back on their surface so far" "$c/log.mpmFoam"
+check "the log reports the points put back on obstacles" "r == 0" r=$?
+
+# Decomposed: the same positions as the serial run
+p=$(copyTutorial mpm/elasticDisks parallel)
+cp -r "$c/constant" "$c/system" "$p/"
+cp -r "$c/0" "$p/"
+rm -rf "$p"/0.*
+decomposeCase "$p" 2 scotch
+(cd "$p" && mpirun -np 2 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar -latestTime > log.reconstructPar 2>&1) \
+    || { echo "FAIL: decomposed run"; tail -30 "$p/log.mpmFoam"; failures=$((failures + 1)); }
+diff=$("$PY" - "$c" "$p" <<'PYEOF'
+import sys, numpy as np, mpmPost
+a, b = sys.argv[1], sys.argv[2]
+t = mpmPost.times(a)[-1]
+def sorted_by_id(c):
+    ids = mpmPost.read_cloud_field(c, t, "pointId").reshape(-1)
+    return mpmPost.read_cloud_field(c, t, "positions")[np.argsort(ids)]
+xa, xb = sorted_by_id(a), sorted_by_id(b)
+print(np.abs(xa - xb).max() if xa.shape == xb.shape else 1e9)
+PYEOF
+)
+check "2 ranks: final positions equal the serial run's" "d < 1e-10" d="$diff"
+
+# An analytic sphere (a cylinder in this 2D case) instead of the STL
+s=$(copyTutorial mpm/elasticDisks sphereCase)
+cp "$c/system/mpmSetParticlesDict" "$s/system/"
+sed -i 's/^endTime .*/endTime 0.6;/; s/^writeInterval .*/writeInterval 0.1;/' "$s/system/controlDict"
+cat >> "$(props "$s")" <<'EOF'
+obstacles
+{
+    ball { shape sphere; centre (0.8 0.5 0.5); radius 0.2; type friction; frictionCoefficient 0.3; }
+}
+EOF
+runApps "$s" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: sphere case"; tail -20 "$s/log.mpmFoam"; exit 1; }
+ballDepth=$("$PY" - "$s" <<'PYEOF'
+import sys, numpy as np, mpmPost
+c = sys.argv[1]
+print(max((0.2 - np.hypot(*(mpmPost.read_cloud_field(c, t, "positions")[:, :2] - [0.8, 0.5]).T)).max()
+          for t in mpmPost.times(c)))
+PYEOF
+)
+check "sphere: no point inside it at any written time (deepest: $ballDepth)" "d < 0" d="$ballDepth"
+
+# Bad input, each a message naming the obstacle
+seededCopy mpm/elasticDisks
+bad()
+{
+    local name="$1" obstacle="$2" pattern="$3" b
+    b=$(freshCopy "$name")
+    mkdir -p "$b/constant/triSurface"
+    stlBox "$b/constant/triSurface/good.stl" 0.6 0.2 -1 0.9 0.9 2
+    stlBox "$b/constant/triSurface/open.stl" 0.6 0.2 -1 0.9 0.9 2 open
+    stlBox "$b/constant/triSurface/inward.stl" 0.6 0.2 -1 0.9 0.9 2 inward
+    printf 'obstacles\n{\n    %s\n}\n' "$obstacle" >> "$(props "$b")"
+    expectFailure "$name" "$pattern" runIn "$b" mpmFoam
+}
+bad missingStl 'block { shape stl; file "none.stl"; }' "Obstacle block: STL file .*none.stl not found"
+bad openStl 'block { shape stl; file "open.stl"; }' "Obstacle block: the STL .*open.stl is not closed \(4 edges"
+bad inwardStl 'block { shape stl; file "inward.stl"; }' "Obstacle block: the STL .*inward.stl has inward normals"
+bad unknownShape 'block { shape sphre; centre (0 0 0); radius 1; }' "unknown shape 'sphre'; did you mean 'sphere'\?"
+bad frictionWithoutMu 'block { shape stl; file "good.stl"; type friction; }' "Missing keyword frictionCoefficient for the friction obstacle block"
+bad unknownKeyword 'block { shape sphere; centre (0 0 0); radius 1; radus 2; }' "radus"
+bad pointsInside 'block { shape box; min (0.1 0.1 -1); max (0.3 0.3 2); }' "Material points lie inside obstacles: [0-9]+ in block"
+finish
