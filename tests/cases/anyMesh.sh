@@ -14,8 +14,9 @@
 #   * Decomposed, on 2 ranks with HDF5 point output, the rotated incline gives
 #     the serial positions to 1e-10; the lagrangian cloud output and parallel
 #     seeding on such a mesh stop with a message saying what to do instead.
-#   * A fluid on such a mesh stops with a message (not supported yet), as do
-#     a lattice spacing too coarse for the mesh and one that is not positive.
+#   * A decomposed fluid on such a mesh stops with a message (serial only,
+#     tests/cases/anyMeshCoupled.sh), as do a lattice spacing too coarse for
+#     the mesh and one that is not positive.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -205,9 +206,12 @@ expectFailure "decomposed seeding on a mesh that is not a box" \
 c=$(copyTutorial multiphase/packedBed coupled)
 sed -i 's/simpleGrading (1 1 1)/simpleGrading (1 4 1)/' "$c/system/blockMeshDict"
 runIn "$c" blockMesh > /dev/null 2>&1
+echo "pointOutput hdf5;" >> "$(props "$c")"
 runApps "$c" mpmSetParticles || { echo "FAIL: seeding the graded packed bed"; failures=$((failures + 1)); }
-expectFailure "a fluid on a mesh that is not a box" \
-    "A fluid on a mesh that is not a uniform Cartesian box is not supported yet" runIn "$c" mpmFoam
+decomposeCase "$c" 2 scotch
+expectFailure "a fluid on a mesh that is not a box, decomposed" \
+    "A fluid on a mesh that is not a uniform Cartesian box runs serially for now" \
+    runIn "$c" mpirun -np 2 --oversubscribe mpmFoam -parallel
 c=$(copyTutorial mpm/elasticDisks coarse)
 cp "$g/system/blockMeshDict" "$c/system/"
 printf 'lattice { spacing 2; }\n' >> "$(props "$c")"

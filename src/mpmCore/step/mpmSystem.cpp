@@ -198,6 +198,32 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
     }
 }
 
+void MpmSystem::spreadGrainVolume(const std::vector<double>& coverage, std::vector<Real>& out)
+{
+    out.assign(std::size_t(lattice_.nNodes), 0.0);
+    const std::vector<Real> invRho0 = inverseDensities();
+    const auto& P = particles_;
+    dispatch([&](auto k, auto d)
+    {
+        using K = decltype(k);
+        constexpr int D = decltype(d)::value;
+        binning_.build(lattice_, particles_);
+        Real* o = out.data();
+        forEachPointColoured([&](Index p)
+        {
+            Stencil<K, D> s;
+            s.compute(lattice_, P.x[0][p], P.x[1][p], P.x[2][p]);
+            Real covered = 0;
+            s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { covered += N*coverage[I]; });
+            // A point inside the mesh has its own lattice cell partly
+            // covered, and a weight there
+            if (!(covered > 0)) return;
+            const Real v = P.mass[p]*invRho0[P.material[p]]/covered;
+            s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { o[I] += N*v; });
+        });
+    });
+}
+
 template<class K, int D>
 void MpmSystem::stepImpl(Real dt)
 {

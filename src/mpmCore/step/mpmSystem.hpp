@@ -181,6 +181,15 @@ public:
     // coupling models that differ per material (drag); one extra P2G.
     void materialGrainVolume(std::vector<std::vector<Real>>& out);
 
+    // The grain volume (mass/rho0) of the points spread to the nodes with
+    // the shape functions, each point's weights renormalised over its
+    // stencil's coverage (per padded node, the share of its lattice cell
+    // inside the mesh, 0..1): sum_I out[I] coverage[I] is the points'
+    // grain volume exactly, so a mesh that covers only part of the lattice
+    // receives all of it (meshLattice's own lattice, fluidCoupling). No
+    // ghost fold: ghosts lie outside the mesh (coverage 0).
+    void spreadGrainVolume(const std::vector<double>& coverage, std::vector<Real>& out);
+
     // Number of points outside the domain (seeding checks), on this rank.
     Index countOutside() const;
 

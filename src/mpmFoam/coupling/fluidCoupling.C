@@ -54,15 +54,16 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     terms_(mesh.nCells())
 {
     const dictionary& mpmDict = mpm.dict();
-    if (!mpm.lattice().cellsAreNodes())
+    overlaps_ = !mpm.lattice().cellsAreNodes();
+    if (overlaps_ && Pstream::parRun())
     {
         FatalErrorInFunction
-            << "A fluid on a mesh that is not a uniform Cartesian box is not"
-            << " supported yet: the MPM lattice is then its own, and the"
-            << " exchange between it and the fluid's cells is not written."
-            << nl << "Mesh the coupled case as a uniform box (blockMesh, one"
-            << " block, no grading), or remove constant/transportProperties"
-            << " for a pure MPM run." << exit(FatalError);
+            << "A fluid on a mesh that is not a uniform Cartesian box runs"
+            << " serially for now: the exchange between the MPM lattice (then"
+            << " its own) and the fluid's cells is not written for decomposed"
+            << " runs." << nl << "Run without -parallel, or mesh the coupled"
+            << " case as a uniform box (blockMesh, one block, no grading) for"
+            << " a decomposed run." << exit(FatalError);
     }
     if (!mpmDict.isDict("coupling"))
     {
@@ -145,8 +146,55 @@ void Foam::fluidCoupling::setGravity(const vector& g)
 Foam::vector Foam::fluidCoupling::solidVelocity(label celli) const
 {
     const auto& v = mpm_.system().grid().velocity;
+    if (overlaps_)
+    {
+        vector u(Zero);
+        mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
+        {
+            u += T*vector(v[0][I], v[1][I], v[2][I]);
+        });
+        return u;
+    }
     const label I = mpm_.lattice().cellNode()[celli];
     return vector(v[0][I], v[1][I], v[2][I]);
+}
+
+void Foam::fluidCoupling::cellsToLattice
+(
+    const vectorField& f, std::array<std::vector<mpm::Real>, 3>& out
+) const
+{
+    if (overlaps_)
+    {
+        cellsToNodes(f, out);
+        return;
+    }
+    const labelList& node = mpm_.lattice().cellNode();
+    forAll(node, celli)
+    {
+        for (int k = 0; k < 3; ++k) out[k][node[celli]] = f[celli][k];
+    }
+}
+
+void Foam::fluidCoupling::cellsToNodes
+(
+    const vectorField& f, std::array<std::vector<mpm::Real>, 3>& out
+) const
+{
+    std::vector<mpm::Real> weight(out[0].size(), 0.0);
+    for (auto& a : out) std::fill(a.begin(), a.end(), 0.0);
+    forAll(f, celli)
+    {
+        mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
+        {
+            weight[I] += T;
+            for (int k = 0; k < 3; ++k) out[k][I] += T*f[celli][k];
+        });
+    }
+    for (std::size_t I = 0; I < weight.size(); ++I)
+    {
+        if (weight[I] > 0) for (auto& a : out) a[I] /= weight[I];
+    }
 }
 
 Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>> Foam::fluidCoupling::costs() const
@@ -162,11 +210,26 @@ Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>> Foam::fluidCoupling::costs() 
 
 Foam::scalar Foam::fluidCoupling::alphaSolid(label celli) const
 {
+    if (overlaps_)
+    {
+        // The grain volume of each overlapped lattice cell, spread evenly
+        // over it: the cell's share is its overlap
+        scalar a = 0;
+        mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
+        {
+            a += T*nodeGrainVolume_[I];
+        });
+        return a/mpm_.lattice().cellVolume();
+    }
     return mpm_.system().grid().volume[mpm_.lattice().cellNode()[celli]]/mesh_.V()[celli];
 }
 
 void Foam::fluidCoupling::updateFluidFraction()
 {
+    if (overlaps_)
+    {
+        mpm_.system().spreadGrainVolume(mpm_.lattice().coverage(), nodeGrainVolume_);
+    }
     const labelList& node = mpm_.lattice().cellNode();
     volScalarField& alphaF = fluid_.alpha();
     // primitiveFieldRef() keeps the previous fluid fraction as the old time
@@ -185,6 +248,20 @@ void Foam::fluidCoupling::updateFluidFraction()
         aF[celli] = fluidFraction(celli);
     }
     alphaF.correctBoundaryConditions();
+    if (overlaps_ && mpm_.logThisStep())
+    {
+        // The cells receive the points' grain volume exactly (before the
+        // cap at alphaMax): the exchange's conservation, in the log
+        scalar cells = 0, points = 0;
+        forAll(node, celli) cells += alphaSolid(celli)*mesh_.V()[celli];
+        const mpm::Particles& P = mpm_.system().particles();
+        for (mpm::Index p = 0; p < P.size(); ++p)
+        {
+            points += P.mass[p]/mpm_.system().material(P.material[p]).rho0();
+        }
+        Info<< "Grain volume: cells " << cells << ", points " << points
+            << ", relative difference " << (points > 0 ? cells/points - 1 : 0) << nl;
+    }
     // Over all processors: the count, the largest alpha.solid and where,
     // and the first maxListed capped cells (each rank's first ones, in
     // processor order).
@@ -228,6 +305,33 @@ void Foam::fluidCoupling::termsToLattice()
     auto& c = mpm_.system().coupling();
     const labelList& node = mpm_.lattice().cellNode();
     const volVectorField& U = fluid_.U();
+    if (overlaps_)
+    {
+        // K_I = sum_c T_cI K_c and K_I U_I = sum_c T_cI (K U)_c: the drag
+        // the nodes receive is what the cells give, with the cells' solid
+        // velocity the same overlap average (solidVelocity); U and the
+        // force per solid volume F are overlap averages
+        std::fill(c.K.begin(), c.K.end(), 0.0);
+        std::array<std::vector<mpm::Real>, 3> KU;
+        for (auto& a : KU) a.assign(c.K.size(), 0.0);
+        forAll(node, celli)
+        {
+            mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
+            {
+                c.K[I] += T*terms_.K[celli];
+                for (int k = 0; k < 3; ++k) KU[k][I] += T*terms_.KU[celli][k];
+            });
+        }
+        std::array<std::vector<mpm::Real>, 3> Uavg;
+        for (auto& a : Uavg) a.assign(c.K.size(), 0.0);
+        cellsToNodes(U.primitiveField(), Uavg);
+        cellsToNodes(terms_.F, c.F);
+        for (std::size_t I = 0; I < c.K.size(); ++I)
+        {
+            for (int k = 0; k < 3; ++k) c.U[k][I] = c.K[I] > 0 ? KU[k][I]/c.K[I] : Uavg[k][I];
+        }
+        return;
+    }
     forAll(node, celli)
     {
         const label I = node[celli];
@@ -290,6 +394,17 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         volVectorField Us(fluid_.Us());
         forAll(node, celli)
         {
+            if (overlaps_)
+            {
+                // The overlap average, as the drag was given to the nodes
+                vector u(Zero);
+                mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
+                {
+                    u += T*vector(c.velocityIntegral[0][I], c.velocityIntegral[1][I], c.velocityIntegral[2][I]);
+                });
+                Us[celli] = u/c.time;
+                continue;
+            }
             const label I = node[celli];
             for (int k = 0; k < 3; ++k) Us[celli][k] = c.velocityIntegral[k][I]/c.time;
         }

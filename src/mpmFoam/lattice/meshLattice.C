@@ -4,6 +4,7 @@
 #include "choice.H"
 #include "knownKeywords.H"
 #include "OStringStream.H"
+#include <map>
 
 Foam::meshLattice::meshLattice(const fvMesh& mesh, const dictionary& mpmDict)
 :
@@ -340,6 +341,95 @@ std::vector<std::array<int, 3>> Foam::meshLattice::ownedLatticeCells() const
 bool Foam::meshLattice::ownsLatticeCell(label i, label j, label k) const
 {
     return ownsLatticeCell(label(lattice_.cellIndex(i, j, k)));
+}
+
+namespace
+{
+
+// Adds the volume of tet (a, b, c, d), split into 8 by its edge midpoints
+// until its longest edge in the solved directions (`solved`: 1 or 0 per
+// axis) is below `size`, to the lattice cell of each leaf's centroid
+template<class Add>
+void sampleTet
+(
+    const Foam::point& a, const Foam::point& b, const Foam::point& c, const Foam::point& d,
+    Foam::scalar size, int depth, const Foam::vector& solved, Add&& add
+)
+{
+    using namespace Foam;
+    auto len = [&](const vector& u) { return mag(cmptMultiply(u, solved)); };
+    const scalar longest = max(max(max(len(b - a), len(c - a)), max(len(d - a), len(c - b))),
+                               max(len(d - b), len(d - c)));
+    if (longest <= size || depth == 0)
+    {
+        add(0.25*(a + b + c + d), mag(((b - a) ^ (c - a)) & (d - a))/6);
+        return;
+    }
+    const point ab(0.5*(a + b)), ac(0.5*(a + c)), ad(0.5*(a + d));
+    const point bc(0.5*(b + c)), bd(0.5*(b + d)), cd(0.5*(c + d));
+    sampleTet(a, ab, ac, ad, size, depth - 1, solved, add);
+    sampleTet(ab, b, bc, bd, size, depth - 1, solved, add);
+    sampleTet(ac, bc, c, cd, size, depth - 1, solved, add);
+    sampleTet(ad, bd, cd, d, size, depth - 1, solved, add);
+    // The inner octahedron, around its diagonal ac-bd
+    sampleTet(ac, bd, ab, bc, size, depth - 1, solved, add);
+    sampleTet(ac, bd, bc, cd, size, depth - 1, solved, add);
+    sampleTet(ac, bd, cd, ad, size, depth - 1, solved, add);
+    sampleTet(ac, bd, ad, ab, size, depth - 1, solved, add);
+}
+
+} // namespace
+
+void Foam::meshLattice::buildExchangeWeights() const
+{
+    const label nCells = mesh_.nCells();
+    weightStart_.setSize(nCells + 1);
+    DynamicList<label> nodes;
+    DynamicList<scalar> fractions;
+    coverage_.assign(std::size_t(lattice_.nNodes), 0.0);
+    const pointField& pts = mesh_.points();
+    // Samples finer than half a lattice cell in the solved directions
+    const scalar size = 0.5*lattice_.h;
+    const vector solved
+    (
+        lattice_.solved[0] ? 1 : 0, lattice_.solved[1] ? 1 : 0, lattice_.solved[2] ? 1 : 0
+    );
+    std::map<label, scalar> overlap;
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        overlap.clear();
+        const point& cc = mesh_.cellCentres()[celli];
+        auto add = [&](const point& x, scalar v)
+        {
+            label ijk[3];
+            indicesOf(x, ijk);
+            overlap[label(lattice_.realNode(ijk[0], ijk[1], ijk[2]))] += v;
+        };
+        for (const label facei : mesh_.cells()[celli])
+        {
+            const face& f = mesh_.faces()[facei];
+            for (label i = 1; i + 1 < f.size(); ++i)
+            {
+                sampleTet(cc, pts[f[0]], pts[f[i]], pts[f[i + 1]], size, 6, solved, add);
+            }
+        }
+        // Fractions of the mesh's cell volume: with a curved face they sum
+        // to the sampled volume's share, a hair off 1; what moves between
+        // the two sides is conserved either way (the same weights)
+        const scalar V = mesh_.cellVolumes()[celli];
+        weightStart_[celli] = nodes.size();
+        for (const auto& o : overlap)
+        {
+            nodes.append(o.first);
+            fractions.append(o.second/V);
+            coverage_[std::size_t(o.first)] += o.second/cellVolume_;
+        }
+    }
+    weightStart_[nCells] = nodes.size();
+    weightNode_.transfer(nodes);
+    weightFraction_.transfer(fractions);
+    Info<< "MPM lattice <-> mesh exchange: " << weightNode_.size() << " overlaps of "
+        << nCells << " cells with lattice cells (tets refined below h/2)" << nl;
 }
 
 Foam::label Foam::meshLattice::fvCellOf(const point& x) const

@@ -7,6 +7,7 @@ Prints the gradient inside the bed (away from its smoothed top edge) and the
 drop over the whole bed, both against Ergun, and writes packedBed.png.
 Usage: plotPackedBed.py [case] [--no-plot]
 """
+import os
 import sys
 
 import numpy as np
@@ -27,8 +28,12 @@ def main():
     last = mpmPost.field_times(case, "p")[-1]
     p = RHO*mpmPost.read_internal_field(case, last, "p")          # [Pa]
     aF = mpmPost.read_internal_field(case, last, "alpha.fluid")
-    H = HEIGHT/len(p)                                               # cell size
-    y = (np.arange(len(p)) + 0.5)*H
+    # Cell heights: the written cell centres (postProcess -func
+    # writeCellCentres) where there are, for a graded mesh; else uniform
+    if os.path.exists(os.path.join(case, last, "C")):
+        y = mpmPost.read_internal_field(case, last, "C")[:, 1]
+    else:
+        y = (np.arange(len(p)) + 0.5)*HEIGHT/len(p)
     # Inside the bed: cells whose stencil does not reach its top edge
     inner = (y > 0.02) & (y < L_BED - 0.02)
     grad = np.polyfit(y[inner], p[inner], 1)[0]

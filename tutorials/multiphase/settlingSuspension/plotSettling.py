@@ -103,6 +103,11 @@ for t in times:
         H = ys[0]
         h = H/nc
         y = (np.arange(nc) + 0.5)*h
+        # A graded mesh: its written cell centres (postProcess -func
+        # writeCellCentres), h then their mean spacing
+        cfile = os.path.join(case, t, "C")
+        if os.path.exists(cfile):
+            y = np.atleast_2d(mpmPost.read_internal_field(case, t, "C"))[:, 1]
 
     def crossing(level):
         above = np.flatnonzero(a > level)
@@ -111,7 +116,7 @@ for t in times:
         k = above.max()
         if k + 1 >= a.size:
             return y[k]
-        return y[k] + (a[k] - level)/(a[k] - a[k + 1])*h
+        return y[k] + (a[k] - level)/(a[k] - a[k + 1])*(y[k + 1] - y[k])
 
     tt.append(float(t))
     top.append(crossing(0.5*alpha0))

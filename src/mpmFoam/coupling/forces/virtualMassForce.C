@@ -30,12 +30,7 @@ void Foam::virtualMassForce::correct()
 {
     // DU/Dt of the fluid over its last step, frozen over the sub-cycles
     auto& c = coupling_.mpm().system().coupling();
-    const labelList& node = coupling_.mpm().lattice().cellNode();
-    const volVectorField& DUDt = coupling_.fluid().DUDt();
-    forAll(node, celli)
-    {
-        for (int k = 0; k < 3; ++k) c.fluidAcceleration[k][node[celli]] = DUDt[celli][k];
-    }
+    coupling_.cellsToLattice(coupling_.fluid().DUDt().primitiveField(), c.fluidAcceleration);
 }
 
 void Foam::virtualMassForce::afterSolids()
