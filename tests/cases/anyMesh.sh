@@ -14,9 +14,8 @@
 #   * Decomposed, on 2 ranks with HDF5 point output, the rotated incline gives
 #     the serial positions to 1e-10; the lagrangian cloud output and parallel
 #     seeding on such a mesh stop with a message saying what to do instead.
-#   * A decomposed fluid on such a mesh stops with a message (serial only,
-#     tests/cases/anyMeshCoupled.sh), as do a lattice spacing too coarse for
-#     the mesh and one that is not positive.
+#   * A lattice spacing too coarse for the mesh and one that is not positive
+#     stop with a message. (A fluid on such a mesh: anyMeshCoupled.sh.)
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -203,15 +202,6 @@ expectFailure "decomposed run on a mesh that is not a box, cloud output" \
     "writes its points with pointOutput hdf5" runIn "$r" mpirun -np 2 --oversubscribe mpmFoam -parallel
 expectFailure "decomposed seeding on a mesh that is not a box" \
     "seed serially and then decomposePar" runIn "$r" mpirun -np 2 --oversubscribe mpmSetParticles -parallel -overwrite
-c=$(copyTutorial multiphase/packedBed coupled)
-sed -i 's/simpleGrading (1 1 1)/simpleGrading (1 4 1)/' "$c/system/blockMeshDict"
-runIn "$c" blockMesh > /dev/null 2>&1
-echo "pointOutput hdf5;" >> "$(props "$c")"
-runApps "$c" mpmSetParticles || { echo "FAIL: seeding the graded packed bed"; failures=$((failures + 1)); }
-decomposeCase "$c" 2 scotch
-expectFailure "a fluid on a mesh that is not a box, decomposed" \
-    "A fluid on a mesh that is not a uniform Cartesian box runs serially for now" \
-    runIn "$c" mpirun -np 2 --oversubscribe mpmFoam -parallel
 c=$(copyTutorial mpm/elasticDisks coarse)
 cp "$g/system/blockMeshDict" "$c/system/"
 printf 'lattice { spacing 2; }\n' >> "$(props "$c")"

@@ -173,6 +173,12 @@ public:
     // volume sent to their halo copies too (a mesh sampling the lattice
     // where another rank owns the node: meshLattice's own lattice)
     void copyMassToHalo() { copyHalo({grid_.mass.data(), grid_.volume.data()}); }
+    // The same for any node arrays: every halo copy summed into its owner,
+    // or the owners' values sent to their copies (decomposed; serial: the
+    // periodic copies). For an exchange with a mesh whose cells touch
+    // another rank's nodes (fluidCoupling on a lattice of its own).
+    void sumToOwners(const std::vector<Real*>& arrays) { sumHalo(arrays); }
+    void copyToHalo(const std::vector<Real*>& arrays) const { copyHalo(arrays); }
 
     // Grain volume (mass/rho0) of each material's points, spread to the
     // nodes with the shape functions and folded from the ghosts like the

@@ -55,15 +55,14 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
 {
     const dictionary& mpmDict = mpm.dict();
     overlaps_ = !mpm.lattice().cellsAreNodes();
-    if (overlaps_ && Pstream::parRun())
+    if (overlaps_)
     {
-        FatalErrorInFunction
-            << "A fluid on a mesh that is not a uniform Cartesian box runs"
-            << " serially for now: the exchange between the MPM lattice (then"
-            << " its own) and the fluid's cells is not written for decomposed"
-            << " runs." << nl << "Run without -parallel, or mesh the coupled"
-            << " case as a uniform box (blockMesh, one block, no grading) for"
-            << " a decomposed run." << exit(FatalError);
+        // Decomposed, a rank's cells overlap its halo copies too: the
+        // coverage is summed into the owners and sent back
+        const std::vector<double>& local = mpm.lattice().coverage();
+        coverage_.assign(local.begin(), local.end());
+        mpm.system().sumToOwners({coverage_.data()});
+        mpm.system().copyToHalo({coverage_.data()});
     }
     if (!mpmDict.isDict("coupling"))
     {
@@ -191,10 +190,14 @@ void Foam::fluidCoupling::cellsToNodes
             for (int k = 0; k < 3; ++k) out[k][I] += T*f[celli][k];
         });
     }
+    // Decomposed: every rank's cells' share, then the average on every copy
+    mpm::MpmSystem& s = mpm_.system();
+    s.sumToOwners({weight.data(), out[0].data(), out[1].data(), out[2].data()});
     for (std::size_t I = 0; I < weight.size(); ++I)
     {
         if (weight[I] > 0) for (auto& a : out) a[I] /= weight[I];
     }
+    s.copyToHalo({out[0].data(), out[1].data(), out[2].data()});
 }
 
 Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>> Foam::fluidCoupling::costs() const
@@ -228,7 +231,10 @@ void Foam::fluidCoupling::updateFluidFraction()
 {
     if (overlaps_)
     {
-        mpm_.system().spreadGrainVolume(mpm_.lattice().coverage(), nodeGrainVolume_);
+        mpm::MpmSystem& s = mpm_.system();
+        s.spreadGrainVolume(coverage_, nodeGrainVolume_);
+        s.sumToOwners({nodeGrainVolume_.data()});
+        s.copyToHalo({nodeGrainVolume_.data()});
     }
     const labelList& node = mpm_.lattice().cellNode();
     volScalarField& alphaF = fluid_.alpha();
@@ -259,6 +265,8 @@ void Foam::fluidCoupling::updateFluidFraction()
         {
             points += P.mass[p]/mpm_.system().material(P.material[p]).rho0();
         }
+        reduce(cells, sumOp<scalar>());
+        reduce(points, sumOp<scalar>());
         Info<< "Grain volume: cells " << cells << ", points " << points
             << ", relative difference " << (points > 0 ? cells/points - 1 : 0) << nl;
     }
@@ -321,6 +329,12 @@ void Foam::fluidCoupling::termsToLattice()
                 c.K[I] += T*terms_.K[celli];
                 for (int k = 0; k < 3; ++k) KU[k][I] += T*terms_.KU[celli][k];
             });
+        }
+        // Decomposed: every rank's cells' share, the sum on every copy
+        {
+            const std::vector<mpm::Real*> a{c.K.data(), KU[0].data(), KU[1].data(), KU[2].data()};
+            mpm_.system().sumToOwners(a);
+            mpm_.system().copyToHalo(a);
         }
         std::array<std::vector<mpm::Real>, 3> Uavg;
         for (auto& a : Uavg) a.assign(c.K.size(), 0.0);
@@ -391,6 +405,12 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         s.mapToGrid();
         updateFluidFraction();
         const labelList& node = mpm_.lattice().cellNode();
+        // A cell may overlap a halo copy that no point of this rank reached:
+        // the owners' integrals, on every copy
+        if (overlaps_)
+        {
+            s.copyToHalo({c.velocityIntegral[0].data(), c.velocityIntegral[1].data(), c.velocityIntegral[2].data()});
+        }
         volVectorField Us(fluid_.Us());
         forAll(node, celli)
         {

@@ -386,7 +386,9 @@ void Foam::meshLattice::buildExchangeWeights() const
     weightStart_.setSize(nCells + 1);
     DynamicList<label> nodes;
     DynamicList<scalar> fractions;
-    coverage_.assign(std::size_t(lattice_.nNodes), 0.0);
+    // The nodes the MPM arrays live on: the domain's, or this rank's box
+    const mpm::Lattice& arrays = subdomain_ ? subdomain_->local() : lattice_;
+    coverage_.assign(std::size_t(arrays.nNodes), 0.0);
     const pointField& pts = mesh_.points();
     // Samples finer than half a lattice cell in the solved directions
     const scalar size = 0.5*lattice_.h;
@@ -403,7 +405,24 @@ void Foam::meshLattice::buildExchangeWeights() const
         {
             label ijk[3];
             indicesOf(x, ijk);
-            overlap[label(lattice_.realNode(ijk[0], ijk[1], ijk[2]))] += v;
+            label I = label(lattice_.realNode(ijk[0], ijk[1], ijk[2]));
+            if (subdomain_)
+            {
+                I = label(subdomain_->localNode(ijk[0], ijk[1], ijk[2]));
+                if (I < 0)
+                {
+                    FatalErrorInFunction
+                        << "Cell " << celli << " at " << cc << " of processor "
+                        << Pstream::myProcNo() << " overlaps lattice cell ("
+                        << ijk[0] << ' ' << ijk[1] << ' ' << ijk[2] << "), beyond"
+                        << " the lattice this processor holds: its mesh cells"
+                        << " are much larger than the lattice's, far from the"
+                        << " lattice cells it owns. Give a larger lattice"
+                        << " spacing or decompose for fewer processors."
+                        << exit(FatalError);
+                }
+            }
+            overlap[I] += v;
         };
         for (const label facei : mesh_.cells()[celli])
         {
@@ -449,6 +468,7 @@ Foam::label Foam::meshLattice::fvCellOf(const point& x) const
 
 void Foam::meshLattice::attach(const std::shared_ptr<const mpm::Subdomain>& subdomain)
 {
+    subdomain_ = subdomain;
     forAll(cellNode_, celli)
     {
         const auto& r = cellIjk_[celli];
