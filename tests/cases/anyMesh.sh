@@ -14,6 +14,12 @@
 #   * Decomposed, on 2 ranks with HDF5 point output, the rotated incline gives
 #     the serial positions to 1e-10; the lagrangian cloud output and parallel
 #     seeding on such a mesh stop with a message saying what to do instead.
+#   * snappyHexMesh around an STL pier (tests/cases/snappyPierCase: hex and
+#     polyhedral cells, the pier a wall patch, the box's faces snapped off
+#     the lattice's sides): an elastic block thrown at the pier at 3 m/s
+#     (1/4 of its wave speed) bounces off it; no point comes closer to the
+#     axis than the snapped surface (radius 0.1 m, its 48-facet STL
+#     inscribed circle 0.0998 m), none is lost.
 #   * A lattice spacing too coarse for the mesh and one that is not positive
 #     stop with a message. (A fluid on such a mesh: anyMeshCoupled.sh.)
 #------------------------------------------------------------------------------
@@ -162,6 +168,31 @@ PYEOF
 )"
 check "seeding: $left points outside the mesh left out, none written outside ($outside of $seeded)" \
     "left > 100 and outside == 0 and seeded > 1000" left="${left:-0}" outside="$outside" seeded="$seeded"
+
+# --- snappyHexMesh ------------------------------------------------------------
+sp="$SCRATCH/snappyPier"
+cp -r "$MPMFOAM_ROOT/tests/cases/snappyPierCase" "$sp"
+runApps "$sp" blockMesh || { echo "FAIL: blockMesh"; failures=$((failures + 1)); }
+(cd "$sp" && snappyHexMesh -overwrite > log.snappyHexMesh 2>&1 && checkMesh > log.checkMesh 2>&1) \
+    || { echo "FAIL: snappyHexMesh"; failures=$((failures + 1)); }
+poly=$(sed -n 's/^ *polyhedra: *\([0-9]*\).*/\1/p' "$sp/log.checkMesh")
+runApps "$sp" mpmSetParticles mpmFoam || { echo "FAIL: snappy pier run"; tail -20 "$sp/log.mpmFoam"; failures=$((failures + 1)); }
+read -r rmin nmin nmax xhit xend <<< "$("$PY" - "$sp" <<'PYEOF'
+import sys, numpy as np, mpmPost
+c = sys.argv[1]
+r, n, xs = [], [], []
+for t in mpmPost.times(c):
+    x = mpmPost.read_positions(c, t)
+    r.append(np.hypot(x[:, 0] - 0.6, x[:, 1] - 0.25).min())
+    n.append(len(x))
+    xs.append(x[:, 0].max())
+print(min(r), min(n), max(n), max(xs), xs[-1])
+PYEOF
+)"
+check "snappyHexMesh pier ($poly polyhedra): no point inside the pier (closest to its axis $rmin m)" \
+    "p > 0 and r >= 0.0995" p="${poly:-0}" r="$rmin"
+check "snappyHexMesh pier: the block reached the pier and bounced back (front $xhit, then $xend m), no point lost" \
+    "h > 0.5 and e < h - 0.1 and a == b" h="$xhit" e="$xend" a="$nmin" b="$nmax"
 
 # --- not yet supported, and bad spacings -----------------------------------
 # --- decomposed: the lattice's own decomposition ---------------------------
