@@ -14,6 +14,10 @@
 #   * Decomposed, on 2 ranks with HDF5 point output, the rotated incline gives
 #     the serial positions to 1e-10; the lagrangian cloud output and parallel
 #     seeding on such a mesh stop with a message saying what to do instead.
+#   * An outlet off the lattice box's sides: the rotated incline, frictionless,
+#     its downhill end an outlet patch: the block slides out through it,
+#     every point and its mass is booked as leaving there (the open
+#     boundaries' balance exact), and none crosses the floor meanwhile.
 #   * snappyHexMesh around an STL pier (tests/cases/snappyPierCase: hex and
 #     polyhedral cells, the pier a wall patch, the box's faces snapped off
 #     the lattice's sides): an elastic block thrown at the pier at 3 m/s
@@ -145,6 +149,38 @@ check "rotated mesh: the block slides at g (sin 25 - 0.3 cos 25) = 1.478 m/s2 (m
 check "rotated mesh: no point outside the mesh at $nt written times (furthest: $out m)" "o <= 1e-9 and n >= 5" o="$out" n="$nt"
 grep -q "patch floor, 60 faces: friction" "$r/log.mpmFoam"
 check "rotated mesh: the floor patch is a level-set friction wall in the log" "r == 0" r=$?
+
+# An outlet at the incline's lower end, off the lattice box's sides
+o=$(copyTutorial mpm/elasticDisks rotatedOutlet)
+cp -r "$r/system" "$r/constant" "$o/"
+rm -rf "$o/constant/polyMesh"
+sed -i 's/    sides  { type wall; faces ( (0 4 7 3) (1 2 6 5) (3 7 6 2) ); }/    sides  { type wall; faces ( (0 4 7 3) (3 7 6 2) ); }\n    end    { type patch; faces ( (1 2 6 5) ); }/' "$o/system/blockMeshDict"
+sed -i 's/    floor { type friction; frictionCoefficient 0.3; }/    floor { type slip; }\n    end   { type outlet; }/' "$(props "$o")"
+sed -i 's/^endTime .*/endTime 1.6;/; s/^writeInterval .*/writeInterval 0.2;/' "$o/system/controlDict"
+runApps "$o" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: outlet run"; tail -30 "$o/log.mpmFoam"; failures=$((failures + 1)); }
+bal=$(grep "^    balance:" "$o/log.mpmFoam" | tail -1)
+echo "    $bal"
+read -r n0 out present merr <<< "$(echo "$bal" | sed -n 's/.*initial \([0-9]*\) .* out \([0-9]*\) .* present \([0-9]*\) .*mass error \([^;]*\);.*/\1 \2 \3 \4/p')"
+check "outlet off the box: every point left through it ($out of $n0), the balance exact (mass error $merr)" \
+    "o == n and p == 0 and n > 100 and abs(e) <= 1e-12" o="${out:--1}" n="${n0:-0}" p="${present:--1}" e="${merr:-1}"
+grep -q "patch end, 20 faces: outlet" "$o/log.mpmFoam"
+check "outlet off the box: a level-set outlet in the log" "r == 0" r=$?
+below=$("$PY" - "$o" <<'PYEOF'
+import math, sys, numpy as np, mpmPost
+c = sys.argv[1]
+th = math.radians(25)
+worst = -1.0
+for t in mpmPost.times(c):
+    try:
+        x = mpmPost.read_positions(c, t)
+    except Exception:
+        continue
+    if len(x):
+        worst = max(worst, (-(x[:, 0]*math.sin(th) + x[:, 1]*math.cos(th))).max())
+print(worst)
+PYEOF
+)
+check "outlet off the box: no point below the floor at any written time ($below)" "b <= 1e-9" b="$below"
 
 # Seeding past the mesh's end: points outside the mesh are left out, counted
 s=$(copyTutorial mpm/elasticDisks seedPast)

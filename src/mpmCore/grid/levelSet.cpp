@@ -178,18 +178,24 @@ void LevelSetWalls::build
         {
             throw std::invalid_argument("level-set wall " + w.name + " has no shape");
         }
-        if (t != WallType::noSlip && t != WallType::slip && t != WallType::friction)
+        if (t != WallType::noSlip && t != WallType::slip && t != WallType::friction && t != WallType::outlet)
         {
             throw std::invalid_argument
             (
                 "level-set wall " + w.name + ": type " + wallTypeName(t)
-              + " is not a wall condition (valid: noSlip slip friction)"
+              + " is not a wall condition (valid: noSlip slip friction outlet)"
             );
+        }
+        if (t == WallType::outlet && w.specCondition < 0)
+        {
+            throw std::invalid_argument("level-set outlet " + w.name + " has no boundary condition index");
         }
         type_.push_back(int(t));
         mu_.push_back(t == WallType::friction ? w.condition.frictionCoefficient : 0.0);
     }
     nInside_ = 0;
+    hasOutlets_ = false;
+    for (const auto& w : walls_) hasOutlets_ = hasOutlets_ || w.condition.type == WallType::outlet;
     if (walls_.empty())
     {
         phi_.clear();

@@ -15,7 +15,9 @@
 //     the wall; friction: Coulomb, the tangential speed reduced by mu times
 //     the normal speed removed);
 //   * containment: a point that ends a step inside a wall is put back on
-//     its surface along the normal, its approaching normal velocity removed.
+//     its surface along the normal, its approaching normal velocity removed;
+//     inside an outlet (a mesh's outlet patch off the box's sides) it
+//     leaves the domain instead.
 //     A point is tested against the closest-point planes of the nodes
 //     around it, so a convex wall is never entered (its tangent planes all
 //     hold it outside). Counted, per rank.
@@ -101,8 +103,13 @@ struct LevelSetWall
 {
     std::string name;
     std::shared_ptr<const WallShape> shape;
-    // noSlip, slip or friction (with its frictionCoefficient)
+    // noSlip, slip or friction (with its frictionCoefficient), or outlet:
+    // no node condition, and a point that crosses it leaves the domain
     WallCondition condition;
+    // An outlet's condition index in the BoundarySpec: the removed count
+    // and mass are booked there (MpmSystem::removedCount), as for an
+    // outlet on a side of the box
+    int specCondition = -1;
 };
 
 // The node arrays the kernels read (raw pointers: copyable to a device).
@@ -134,6 +141,8 @@ public:
     );
 
     bool empty() const { return walls_.empty(); }
+    // Whether any wall is an outlet (points may leave through it)
+    bool hasOutlets() const { return hasOutlets_; }
     const std::vector<LevelSetWall>& walls() const { return walls_; }
     // Empty view (false) without walls
     LevelSetView view() const;
@@ -161,6 +170,7 @@ private:
     Real band_ = 0;
     Real contact_ = 0;
     Index nInside_ = 0;
+    bool hasOutlets_ = false;
 };
 
 } // namespace mpm

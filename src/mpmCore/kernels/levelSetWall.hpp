@@ -25,6 +25,7 @@ MPM_HOST_DEVICE inline void levelSetWallNode
 {
     if (!(ls.phi[I] < ls.contact) || mass[I] <= massTolerance) return;
     const int w = ls.wall[I];
+    if (ls.type[w] == int(WallType::outlet)) return;   // open: no condition
     if (ls.type[w] == int(WallType::noSlip))
     {
         for (int d = 0; d < 3; ++d) v[d][I] = 0;
@@ -64,8 +65,9 @@ MPM_HOST_DEVICE inline Real levelSetPlaneDistance
 // point in a corner between two walls leaves both. A convex wall lies
 // behind each of its tangent planes, so a point outside them all is outside
 // the wall. Returns whether the point was moved. Points more than a band
-// from every wall cost one load.
-MPM_HOST_DEVICE inline bool levelSetContainPoint
+// from every wall cost one load. Returns 0 (left alone), 1 (put back), or
+// 2 + w: the point lies beyond outlet w and leaves (nothing is changed).
+MPM_HOST_DEVICE inline int levelSetContainPoint
 (
     const Lattice& L, const LevelSetView& ls, const PointView& P, Index p
 )
@@ -84,13 +86,14 @@ MPM_HOST_DEVICE inline bool levelSetContainPoint
         // Stay on the lattice's nodes (ghost layers included)
         if (lo[a] < -L.pad) lo[a] = -L.pad;
         if (hi[a] > L.nCells[a] + L.pad - 1) hi[a] = L.nCells[a] + L.pad - 1;
-        if (cell[a] < -L.pad || cell[a] > L.nCells[a] + L.pad - 1) return false;
+        if (cell[a] < -L.pad || cell[a] > L.nCells[a] + L.pad - 1) return 0;
     }
-    if (ls.phi[L.realNode(cell[0], cell[1], cell[2])] > ls.band) return false;
+    if (ls.phi[L.realNode(cell[0], cell[1], cell[2])] > ls.band) return 0;
     bool moved = false;
     for (int pass = 0; pass < 3; ++pass)
     {
         Real worst = 0, n[3] = {0, 0, 0};
+        int through = -1;
         for (int k = lo[2]; k <= hi[2]; ++k)
         for (int j = lo[1]; j <= hi[1]; ++j)
         for (int i = lo[0]; i <= hi[0]; ++i)
@@ -98,9 +101,17 @@ MPM_HOST_DEVICE inline bool levelSetContainPoint
             const int c[3] = {i, j, k};
             const Index I = L.realNode(i, j, k);
             const Real d = levelSetPlaneDistance(L, ls, c, I, x);
-            if (d < worst) { worst = d; for (int a = 0; a < 3; ++a) n[a] = ls.normal[a][I]; }
+            if (d < worst)
+            {
+                worst = d;
+                through = ls.wall[I];
+                for (int a = 0; a < 3; ++a) n[a] = ls.normal[a][I];
+            }
         }
         if (worst >= 0) break;
+        // Beyond an outlet the point leaves, where it is (on the first
+        // pass: a point put back from a wall stays)
+        if (ls.type[through] == int(WallType::outlet) && !moved) return 2 + through;
         const Real push = -worst + 1e-9*L.h;
         for (int a = 0; a < 3; ++a) x[a] += push*n[a];
         const Real vn = P.v[0][p]*n[0] + P.v[1][p]*n[1] + P.v[2][p]*n[2];
@@ -108,7 +119,7 @@ MPM_HOST_DEVICE inline bool levelSetContainPoint
         moved = true;
     }
     if (moved) for (int a = 0; a < 3; ++a) P.x[a][p] = x[a];
-    return moved;
+    return moved ? 1 : 0;
 }
 
 } // namespace mpm

@@ -741,17 +741,31 @@ void MpmSystem::applyLevelSetWalls(std::array<std::vector<Real>, 3>& v)
     forEachActiveNode([&](Index I) { levelSetWallNode(ls, m, vp, tol, I); });
 }
 
-void MpmSystem::containPoints()
+Index MpmSystem::containPoints()
 {
     const LevelSetView ls = levelSet_.view();
-    if (!ls) return;
+    if (!ls) return 0;
     const PointView P = pointView(particles_, L_, dx_);
     const Lattice& L = lattice_;
     const Index n = P.n;
-    Index moved = 0;
-    #pragma omp parallel for schedule(static) reduction(+:moved) if(worthThreads(n))
-    for (Index p = 0; p < n; ++p) moved += levelSetContainPoint(L, ls, P, p);
+    const auto& walls = levelSet_.walls();
+    const bool outlets = levelSet_.hasOutlets();
+    Index moved = 0, leaving = 0;
+    #pragma omp parallel for schedule(static) reduction(+:moved, leaving) if(worthThreads(n))
+    for (Index p = 0; p < n; ++p)
+    {
+        // Already leaving through a side of the box
+        if (outlets && leaving_[p] >= 0) continue;
+        const int r = levelSetContainPoint(L, ls, P, p);
+        if (r == 1) ++moved;
+        else if (r >= 2)
+        {
+            leaving_[p] = walls[r - 2].specCondition;
+            ++leaving;
+        }
+    }
     contained_ += moved;
+    return leaving;
 }
 
 // G2P: new point velocity (PIC/FLIP blend or APIC), displacement over the
@@ -879,7 +893,7 @@ void MpmSystem::movePoints()
     Index firstBad = n;
     Index clamped = 0, leaving = 0;
     const bool frozen = options_.freezePositions;
-    const bool open = boundary_.hasOpenFaces();
+    const bool open = boundary_.hasOpenFaces() || levelSet_.hasOutlets();
     const bool periodic[3] = {boundary_.periodic(0), boundary_.periodic(1), boundary_.periodic(2)};
     leaving_.assign(open ? n : 0, -1);
     #pragma omp parallel for schedule(static) reduction(min:firstBad) reduction(+:clamped, leaving) if(worthThreads(n))
@@ -894,8 +908,8 @@ void MpmSystem::movePoints()
     }
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
+    if (!frozen) leaving += containPoints();
     removeLeaving(leaving);
-    if (!frozen) containPoints();
 }
 
 // A point whose new position x lies beyond a face: marked as leaving
@@ -1061,11 +1075,14 @@ void MpmSystem::movePointsOnDevice(bool apic)
     const PointView P = pointView(particles_, L_, dx_);
     device_->downloadPoints(P, apic);
     if (inverted_.count > 0) findFirstInverted();
-    if (!frozen) containPoints();
-    if (flagged == 0) return;
     const Index n = P.n;
     Index firstBad = n, clamped = 0, leaving = 0;
-    leaving_.assign(boundary_.hasOpenFaces() ? n : 0, -1);
+    leaving_.assign(boundary_.hasOpenFaces() || levelSet_.hasOutlets() ? n : 0, -1);
+    if (flagged == 0)
+    {
+        if (!frozen) removeLeaving(containPoints());
+        return;
+    }
     for (Index p = 0; p < n; ++p)
     {
         const int flags = moveFlags_[p];
@@ -1078,6 +1095,7 @@ void MpmSystem::movePointsOnDevice(bool apic)
     }
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
+    if (!frozen) leaving += containPoints();
     removeLeaving(leaving);
 }
 #endif // MPM_HAVE_CUDA

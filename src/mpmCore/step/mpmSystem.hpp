@@ -280,8 +280,10 @@ private:
     void applyFriction(std::array<std::vector<Real>, 3>& v, Real dt);
     // The level-set walls' node condition on an updated velocity
     void applyLevelSetWalls(std::array<std::vector<Real>, 3>& v);
-    // Puts points inside a level-set wall back on its surface
-    void containPoints();
+    // Puts points inside a level-set wall back on its surface; marks those
+    // beyond a level-set outlet in leaving_ (sized by the caller) and
+    // returns their number
+    Index containPoints();
     void updateStress(Real dt);
     void movePoints();
 

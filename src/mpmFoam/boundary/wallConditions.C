@@ -98,6 +98,7 @@ void readPatchWalls
         mpm::LevelSetWall w;
         w.name = bm[patchi].name();
         w.condition = spec.conditions[patchCondition[patchi]];
+        w.specCondition = int(patchCondition[patchi]);
         w.shape = std::make_shared<surfaceWallShape>
         (
             triangulate(mesh, offBox[patchi]), sign, true,
@@ -258,15 +259,16 @@ mpm::BoundarySpec Foam::readWallConditions
             if (side < 0)
             {
                 const mpm::WallType t = spec.conditions[condition].type;
-                if (mpm::isOpen(t) || t == mpm::WallType::periodic)
+                if (t == mpm::WallType::inlet || t == mpm::WallType::periodic)
                 {
                     FatalErrorInFunction
                         << "Patch " << pp.name() << " is " << mpm::wallTypeName(t)
                         << " but its face " << facei << " at " << fc << " is "
                         << "not on a side of the MPM lattice's box "
                         << "(origin " << point(L.origin[0], L.origin[1], L.origin[2])
-                        << ", h " << L.h << "): outlets, inlets and periodic"
-                        << " patches must lie on its sides for now" << exit(FatalError);
+                        << ", h " << L.h << "): inlets and periodic patches"
+                        << " must lie on its sides for now (outlets and walls"
+                        << " may lie anywhere)" << exit(FatalError);
                 }
                 offBox[pp.index()].append(pp.start() + facei);
                 continue;

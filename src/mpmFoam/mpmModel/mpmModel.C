@@ -279,6 +279,12 @@ Foam::scalar Foam::mpmModel::deltaT() const
         warnIfAboveCourantLimit(mesh_.time().deltaTValue(), "timeStep fixed (controlDict deltaT)");
         return mesh_.time().deltaTValue();
     }
+    // No point left anywhere (all gone through an outlet): nothing limits
+    // the step; take controlDict's deltaT rather than an infinite one
+    if (returnReduce(label(system_.particles().size()), sumOp<label>()) == 0)
+    {
+        return min(mesh_.time().deltaTValue(), controls_.maxDeltaT);
+    }
     const floatingPointTrapsOff noTraps;
     const scalar dt = min(system_.stableDeltaT(controls_.courant), controls_.maxDeltaT);
     if (!std::isfinite(dt) || dt <= 0)
