@@ -10,6 +10,10 @@
 #     rebounds, and keeps every seeded point and its mass;
 #   * the same run on 2 ranks (scotch) gives the serial positions to 1e-10;
 #   * a sphere obstacle described analytically holds the disk the same way;
+#   * a moving obstacle: a gate (a box) holds a column of sand and is lifted
+#     at 2 m/s from t = 0.1 s (velocity, a Function1 table): until then no
+#     point passes it, afterwards the sand flows out beneath it, and no
+#     point is ever inside the gate where it is at that time;
 #   * bad input stops with a message naming the obstacle: a missing STL, an
 #     open STL, inward normals, an unknown shape, friction without its
 #     coefficient, points inside an obstacle at start-up.
@@ -149,6 +153,53 @@ print(max((0.2 - np.hypot(*(mpmPost.read_cloud_field(c, t, "positions")[:, :2] -
 PYEOF
 )
 check "sphere: no point inside it at any written time (deepest: $ballDepth)" "d < 0" d="$ballDepth"
+
+# A gate lifted at 2 m/s from t = 0.1 s
+gt=$(copyTutorial mpm/elasticDisks gate)
+cat > "$(props "$gt")" <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object mpmProperties; }
+shapeFunction quadraticBSpline; transfer APIC; logInterval 50;
+timeStep { type adaptive; courant 0.3; }
+materials { sand { model druckerPrager; rho 1600; E 1e6; nu 0.3; phi 30; c 0; psi 0; } }
+walls { "(left|right|bottom|top)" { type slip; } }
+obstacles
+{
+    gate
+    {
+        shape box; min (0.2 -0.3 -1); max (0.35 1.3 2); type slip;   // 3 cells thick
+        velocity table ((0 (0 0 0)) (0.1 (0 0 0)) (0.1001 (0 2 0)) (10 (0 2 0)));
+    }
+}
+EOF
+printf 'FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location "constant"; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 0);\n' > "$gt/constant/g"
+cat > "$gt/system/mpmSetParticlesDict" <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object mpmSetParticlesDict; }
+regions { column { type box; min (-0.2 -0.2 0); max (0.2 0.4 1); material sand; pointsPerCell (2 2 1); } }
+EOF
+sed -i 's/^endTime .*/endTime 0.6;/; s/^writeInterval .*/writeInterval 0.05;/' "$gt/system/controlDict"
+runApps "$gt" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: gate run"; tail -20 "$gt/log.mpmFoam"; failures=$((failures + 1)); }
+read -r before after inside <<< "$("$PY" - "$gt" <<'PYEOF'
+import sys, numpy as np, mpmPost
+c = sys.argv[1]
+before, after, inside = -1.0, -1.0, -1.0
+for t in mpmPost.times(c):
+    x = mpmPost.read_positions(c, t)
+    tt = float(t)
+    lift = 2*max(0.0, tt - 0.10005)   # the table's integral, to 1e-4 m
+    if tt <= 0.1:
+        before = max(before, x[:, 0].max())
+    after = max(after, x[:, 0].max())
+    # Depth inside the gate where it is now (negative: outside)
+    d = np.minimum.reduce([x[:, 0] - 0.2, 0.35 - x[:, 0], x[:, 1] - (-0.3 + lift), (1.3 + lift) - x[:, 1]])
+    inside = max(inside, d.max())
+print(before, after, inside)
+PYEOF
+)"
+check "gate: held until lifted (front $before m, the gate at 0.2 m)" "b <= 0.2" b="$before"
+check "gate: the sand flows out beneath it once lifted (front $after m, the gate 0.2-0.35 m)" "a > 0.45" a="$after"
+check "gate: no point inside the moving gate at any written time (deepest $inside m; the lift known to 1e-4 m)" "d < 1e-4" d="$inside"
+grep -q "moves with velocity table" "$gt/log.mpmFoam"
+check "gate: the log says the gate moves" "r == 0" r=$?
 
 # Bad input, each a message naming the obstacle
 seededCopy mpm/elasticDisks

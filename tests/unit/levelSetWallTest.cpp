@@ -399,3 +399,74 @@ TEST(LevelSetWall, FlatWallImpactMatchesMirroredWall)
         }
     }
 }
+
+TEST(LevelSetWall, MovingWallsCarryAndPushBlocks)
+{
+    // 1. A conveyor: a noSlip floor plane (y = 0.2718, between node layers)
+    //    moving along itself at V = 0.5 m/s under a block resting on it
+    //    (gravity): the floor's nodes hold the block's base to V, and the
+    //    block travels at V (mean velocity over 0.3-0.6 s within 2 %).
+    // 2. A plough: a slip plane moving at V along its normal reaches a
+    //    resting block (no gravity) and pushes it: no point is ever behind
+    //    the plane at the end of a step (containment against the plane
+    //    where it is then), and the block leaves at V or faster (an elastic
+    //    block rebounds from it). Also at 2 wave speeds, where the plane
+    //    runs into the block faster than its nodes can push it away.
+    const Real dp = 0.5*h, vol = dp*dp*h;
+    for (const auto& [name, o0] : algorithms())
+    {
+        for (const int variant : {0, 1, 2})
+        {
+            const bool plough = variant > 0;
+            const Real V = variant == 2 ? 2*waveSpeed() : 0.5;
+            StepOptions o = o0;
+            o.gravity = {0, plough ? 0.0 : -g, 0};
+            const Lattice L = box(40, 14, 1, h);
+            MpmSystem s;
+            s.setup(L, allSlip(), o);
+            const std::array<Real, 3> p0 = plough ? std::array<Real, 3>{0.45, 0, 0} : std::array<Real, 3>{0, 0.2718, 0};
+            const std::array<Real, 3> n = plough ? std::array<Real, 3>{1, 0, 0} : std::array<Real, 3>{0, 1, 0};
+            s.setLevelSetWalls({{"wall", std::make_shared<HalfSpaceShape>(p0, n),
+                                 WallCondition{plough ? WallType::slip : WallType::noSlip, 0}}}, {0, 0, 0.5*h});
+            s.materials().push_back(makeLaw("linearElastic", {{"rho", rho}, {"E", E}, {"nu", nu}}));
+            const Real y0 = plough ? 0.3 : 0.2718;
+            for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 16; ++i)
+            {
+                s.particles().add({0.5 + (i + 0.5)*dp, y0 + (j + 0.5)*dp, 0.5*h}, {0, 0, 0}, rho*vol, vol, 0);
+            }
+            const Real dt = 0.3*h/(waveSpeed() + V);
+            const Real tEnd = variant == 2 ? 0.01 : plough ? 0.8 : 0.6;
+            Real behind = 1e9, uSum = 0;
+            int uCount = 0;
+            for (Real t = 0; t < tEnd; t += dt)
+            {
+                // The plough moves along x; the conveyor's plane along itself
+                s.moveLevelSetWalls({{t*V, 0, 0}}, {{V, 0, 0}});
+                s.step(dt);
+                const auto& P = s.particles();
+                Real m = 0, mu = 0;
+                for (Index p = 0; p < P.size(); ++p)
+                {
+                    if (plough) behind = std::min(behind, P.x[0][p] - (p0[0] + (t + dt)*V));
+                    m += P.mass[p];
+                    mu += P.mass[p]*P.v[0][p];
+                }
+                if (t > tEnd - (variant == 2 ? 0.003 : 0.3)) { uSum += mu/m; ++uCount; }
+            }
+            const Real u = uSum/uCount;
+            if (plough)
+            {
+                std::cout << "  " << name << ", plough at " << V << " m/s: block at " << u/V << " of the wall's speed, closest to the wall "
+                          << behind << " m\n";
+                EXPECT_GE(behind, 0) << name;
+                EXPECT_GE(u/V, 0.98) << name;
+            }
+            else
+            {
+                std::cout << "  " << name << ", conveyor: block at " << u/V << " of the floor's speed\n";
+                EXPECT_NEAR(u/V, 1.0, 0.02) << name;
+            }
+        }
+    }
+}

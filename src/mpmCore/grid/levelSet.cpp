@@ -206,6 +206,30 @@ void LevelSetWalls::build
     // Nodes further than a few cells from every wall need only the sign:
     // the widest stencil (CBS) reaches two cells, a point's planes one more.
     band_ = 4*L.h;
+    unsolved_ = unsolved;
+    for (auto& a : velocity_) a.assign(walls_.size(), 0.0);
+    displacement_.assign(walls_.size(), Vec{0, 0, 0});
+    computeNodes(L);
+}
+
+void LevelSetWalls::move(const Lattice& L, const std::vector<Vec>& displacement, const std::vector<Vec>& velocity)
+{
+    if (displacement.size() != walls_.size() || velocity.size() != walls_.size())
+    {
+        throw std::invalid_argument("level-set walls: one displacement and velocity per wall");
+    }
+    displacement_ = displacement;
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+    {
+        for (int a = 0; a < 3; ++a) velocity_[a][w] = L.solved[a] ? velocity[w][a] : 0;
+    }
+    computeNodes(L);
+}
+
+void LevelSetWalls::computeNodes(const Lattice& L)
+{
+    const Vec& unsolved = unsolved_;
+    nInside_ = 0;
     const Index n = L.nNodes;
     phi_.assign(n, 0);
     for (auto& a : normal_) a.assign(n, 0);
@@ -244,6 +268,7 @@ LevelSetView LevelSetWalls::view() const
     v.mu = mu_.data();
     v.band = band_;
     v.contact = contact_;
+    for (int a = 0; a < 3; ++a) v.velocity[a] = velocity_[a].data();
     return v;
 }
 
@@ -265,7 +290,10 @@ Real LevelSetWalls::nearest(const Real x[3], Real band, Real normal[3], int& wal
         {
             if (walls_[v].shape->group() != g) continue;
             Real nrm[3];
-            const Real d = walls_[v].shape->distance(x, nrm, band);
+            // A moving wall: its shape taken back by its displacement
+            const Vec& dv = displacement_.empty() ? Vec{0, 0, 0} : displacement_[v];
+            const Real xs[3] = {x[0] - dv[0], x[1] - dv[1], x[2] - dv[2]};
+            const Real d = walls_[v].shape->distance(xs, nrm, band);
             if (gw < 0 || std::abs(d) < std::abs(gd))
             {
                 gd = d; gw = int(v);

@@ -122,6 +122,7 @@ struct LevelSetView
     const Real* mu = nullptr;           // per wall: Coulomb coefficient
     Real band = 0;                      // beyond it phi is only a bound
     Real contact = 0;                   // nodes with phi below it are held
+    const Real* velocity[3] = {};       // per wall: its velocity (moving)
     explicit operator bool() const { return phi != nullptr; }
 };
 
@@ -147,6 +148,16 @@ public:
     // Empty view (false) without walls
     LevelSetView view() const;
 
+    // Moving walls (translations): each wall's displacement from where its
+    // shape puts it, and its velocity over the coming step; the node
+    // planes are computed again there (every node, every wall: a step's
+    // cost of O(nodes x walls), paid only by cases with moving walls)
+    void move
+    (
+        const Lattice& L, const std::vector<std::array<Real, 3>>& displacement,
+        const std::vector<std::array<Real, 3>>& velocity
+    );
+
     // The exact signed distance to the nearest wall at x (min over the
     // shapes), for checks of seeded points; wall: which one (or -1)
     Real distance(const Real x[3], int* wall = nullptr) const;
@@ -171,6 +182,10 @@ private:
     Real contact_ = 0;
     Index nInside_ = 0;
     bool hasOutlets_ = false;
+    std::array<Real, 3> unsolved_{0, 0, 0};
+    std::vector<std::array<Real, 3>> displacement_;
+    std::array<std::vector<Real>, 3> velocity_;
+    void computeNodes(const Lattice& L);
 };
 
 } // namespace mpm

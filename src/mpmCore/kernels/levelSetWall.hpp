@@ -26,34 +26,42 @@ MPM_HOST_DEVICE inline void levelSetWallNode
     if (!(ls.phi[I] < ls.contact) || mass[I] <= massTolerance) return;
     const int w = ls.wall[I];
     if (ls.type[w] == int(WallType::outlet)) return;   // open: no condition
+    // Relative to the wall (a moving wall: its velocity; else zero)
+    const Real vw[3] = {ls.velocity[0][w], ls.velocity[1][w], ls.velocity[2][w]};
+    Real u[3] = {v[0][I] - vw[0], v[1][I] - vw[1], v[2][I] - vw[2]};
     if (ls.type[w] == int(WallType::noSlip))
     {
-        for (int d = 0; d < 3; ++d) v[d][I] = 0;
+        for (int d = 0; d < 3; ++d) v[d][I] = vw[d];
         return;
     }
     const Real n[3] = {ls.normal[0][I], ls.normal[1][I], ls.normal[2][I]};
-    const Real vn = v[0][I]*n[0] + v[1][I]*n[1] + v[2][I]*n[2];
-    if (vn >= 0) return;   // leaving the wall: unilateral
-    for (int d = 0; d < 3; ++d) v[d][I] -= vn*n[d];
-    if (ls.type[w] != int(WallType::friction)) return;
-    const Real vt = std::sqrt(v[0][I]*v[0][I] + v[1][I]*v[1][I] + v[2][I]*v[2][I]);
-    const Real dv = -ls.mu[w]*vn;
-    const Real scale = vt > dv ? 1 - dv/vt : 0;
-    for (int d = 0; d < 3; ++d) v[d][I] *= scale;
+    const Real un = u[0]*n[0] + u[1]*n[1] + u[2]*n[2];
+    if (un >= 0) return;   // leaving the wall: unilateral
+    for (int d = 0; d < 3; ++d) u[d] -= un*n[d];
+    if (ls.type[w] == int(WallType::friction))
+    {
+        const Real ut = std::sqrt(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]);
+        const Real du = -ls.mu[w]*un;
+        const Real scale = ut > du ? 1 - du/ut : 0;
+        for (int d = 0; d < 3; ++d) u[d] *= scale;
+    }
+    for (int d = 0; d < 3; ++d) v[d][I] = u[d] + vw[d];
 }
 
-// Signed distance of x from the closest-point plane of node I
+// Signed distance of x from the closest-point plane of node I, the plane
+// moved on by its wall's velocity times dt (the wall at the step's end)
 MPM_HOST_DEVICE inline Real levelSetPlaneDistance
 (
-    const Lattice& L, const LevelSetView& ls, const int c[3], Index I, const Real x[3]
+    const Lattice& L, const LevelSetView& ls, const int c[3], Index I, const Real x[3], Real dt
 )
 {
     Real d = ls.phi[I];
+    const int w = ls.wall[I];
     for (int a = 0; a < 3; ++a)
     {
         if (!L.solved[a]) continue;
         const Real xa = L.origin[a] + (c[a] + 0.5)*L.h;
-        d += ls.normal[a][I]*(x[a] - xa);
+        d += ls.normal[a][I]*(x[a] - xa - dt*ls.velocity[a][w]);
     }
     return d;
 }
@@ -69,7 +77,7 @@ MPM_HOST_DEVICE inline Real levelSetPlaneDistance
 // 2 + w: the point lies beyond outlet w and leaves (nothing is changed).
 MPM_HOST_DEVICE inline int levelSetContainPoint
 (
-    const Lattice& L, const LevelSetView& ls, const PointView& P, Index p
+    const Lattice& L, const LevelSetView& ls, const PointView& P, Index p, Real dt
 )
 {
     Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
@@ -100,7 +108,7 @@ MPM_HOST_DEVICE inline int levelSetContainPoint
         {
             const int c[3] = {i, j, k};
             const Index I = L.realNode(i, j, k);
-            const Real d = levelSetPlaneDistance(L, ls, c, I, x);
+            const Real d = levelSetPlaneDistance(L, ls, c, I, x, dt);
             if (d < worst)
             {
                 worst = d;
@@ -114,8 +122,10 @@ MPM_HOST_DEVICE inline int levelSetContainPoint
         if (ls.type[through] == int(WallType::outlet) && !moved) return 2 + through;
         const Real push = -worst + 1e-9*L.h;
         for (int a = 0; a < 3; ++a) x[a] += push*n[a];
-        const Real vn = P.v[0][p]*n[0] + P.v[1][p]*n[1] + P.v[2][p]*n[2];
-        if (vn < 0) for (int a = 0; a < 3; ++a) P.v[a][p] -= vn*n[a];
+        // The velocity relative to the wall loses its approaching part
+        Real un = 0;
+        for (int a = 0; a < 3; ++a) un += (P.v[a][p] - ls.velocity[a][through])*n[a];
+        if (un < 0) for (int a = 0; a < 3; ++a) P.v[a][p] -= un*n[a];
         moved = true;
     }
     if (moved) for (int a = 0; a < 3; ++a) P.x[a][p] = x[a];

@@ -150,6 +150,7 @@ void MpmSystem::binPoints()
 
 void MpmSystem::step(Real dt)
 {
+    stepDt_ = dt;
     dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
     migrate();
     ++stepCount_;
@@ -731,6 +732,15 @@ void MpmSystem::setLevelSetWalls(std::vector<LevelSetWall> walls, const std::arr
     contained_ = 0;
 }
 
+void MpmSystem::moveLevelSetWalls
+(
+    const std::vector<std::array<Real, 3>>& displacement,
+    const std::vector<std::array<Real, 3>>& velocity
+)
+{
+    levelSet_.move(lattice_, displacement, velocity);
+}
+
 void MpmSystem::applyLevelSetWalls(std::array<std::vector<Real>, 3>& v)
 {
     const LevelSetView ls = levelSet_.view();
@@ -756,7 +766,7 @@ Index MpmSystem::containPoints()
     {
         // Already leaving through a side of the box
         if (outlets && leaving_[p] >= 0) continue;
-        const int r = levelSetContainPoint(L, ls, P, p);
+        const int r = levelSetContainPoint(L, ls, P, p, stepDt_);
         if (r == 1) ++moved;
         else if (r >= 2)
         {

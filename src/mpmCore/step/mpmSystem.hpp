@@ -117,6 +117,15 @@ public:
     // computed. Throws std::invalid_argument for a bad wall.
     void setLevelSetWalls(std::vector<LevelSetWall> walls, const std::array<Real, 3>& unsolved);
     const LevelSetWalls& levelSetWalls() const { return levelSet_; }
+    // Moving level-set walls (translations), before a step: each wall's
+    // displacement at the step's start and its velocity over the step
+    // (LevelSetWalls::move). The node condition then holds the material to
+    // the wall's velocity, and containment uses the wall at the step's end.
+    void moveLevelSetWalls
+    (
+        const std::vector<std::array<Real, 3>>& displacement,
+        const std::vector<std::array<Real, 3>>& velocity
+    );
     // Points put back on a level-set wall's surface after a step, on this
     // rank since setup (the node condition keeps most outside; the rest
     // are within a fraction of a cell)
@@ -293,6 +302,7 @@ private:
     Boundary boundary_;
     LevelSetWalls levelSet_;
     Index contained_ = 0;
+    Real stepDt_ = 0;     // the step's dt, for containment by moving walls
     StepOptions options_;
     Particles particles_;
     std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;

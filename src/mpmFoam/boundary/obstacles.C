@@ -60,7 +60,8 @@ std::vector<mpm::LevelSetWall> Foam::readObstacles
 (
     const fvMesh& mesh,
     const dictionary& mpmDict,
-    bool log
+    bool log,
+    PtrList<Function1<vector>>* velocities
 )
 {
     std::vector<mpm::LevelSetWall> walls;
@@ -90,7 +91,7 @@ std::vector<mpm::LevelSetWall> Foam::readObstacles
                 << "Valid shapes: " << spaceSeparated(shapes).c_str()
                 << exit(FatalIOError);
         }
-        wordList known{"shape", "type", "frictionCoefficient"};
+        wordList known{"shape", "type", "frictionCoefficient", "velocity", "velocityCoeffs"};
         known.append(shapeKeywords(shape));
         checkKeywords(d, known, "obstacle " + std::string(name));
         if (log) Info<< "    " << name << nl;
@@ -189,6 +190,19 @@ std::vector<mpm::LevelSetWall> Foam::readObstacles
                 << "Obstacle " << name << ": " << err.what() << exit(FatalIOError);
         }
         if (log) Info<< "        " << w.shape->describe().c_str() << nl;
+        if (velocities)
+        {
+            velocities->setSize(label(walls.size()) + 1);
+            if (d.found("velocity"))
+            {
+                velocities->set(label(walls.size()), Function1<vector>::New("velocity", d));
+                if (log)
+                {
+                    Info<< "        moves with velocity "
+                        << (*velocities)[label(walls.size())].type() << " (a Function1 of time)" << nl;
+                }
+            }
+        }
         walls.push_back(std::move(w));
     }
     return walls;

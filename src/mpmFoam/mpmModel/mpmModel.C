@@ -328,6 +328,13 @@ void Foam::mpmModel::evolve(scalar dt)
     try
     {
         const floatingPointTrapsOff noTraps;
+        if (wallsMove_)
+        {
+            // Where the moving walls are at the step's start, and their
+            // mean velocity over it
+            moveWalls(wallTime_, wallTime_ + dt);
+        }
+        wallTime_ += dt;
         system_.step(dt);
     }
     catch (const mpm::NonFiniteError& e)
@@ -420,8 +427,22 @@ bool Foam::mpmModel::logThisStep() const
 
 void Foam::mpmModel::setLevelSetWalls(std::vector<mpm::LevelSetWall> walls)
 {
-    for (mpm::LevelSetWall& w : readObstacles(mesh_, dict_)) walls.push_back(std::move(w));
+    const label nFixed = label(walls.size());
+    PtrList<Function1<vector>> obstacleVelocity;
+    for (mpm::LevelSetWall& w : readObstacles(mesh_, dict_, true, &obstacleVelocity))
+    {
+        walls.push_back(std::move(w));
+    }
     if (walls.empty()) return;
+    wallVelocity_.setSize(label(walls.size()));
+    forAll(obstacleVelocity, i)
+    {
+        if (obstacleVelocity.set(i))
+        {
+            wallVelocity_.set(nFixed + i, obstacleVelocity.release(i));
+            wallsMove_ = true;
+        }
+    }
     // The shapes see a 2D case's mid-plane along its unsolved axis
     const point mid(lattice_.cellCentre(0));
     try
@@ -435,6 +456,26 @@ void Foam::mpmModel::setLevelSetWalls(std::vector<mpm::LevelSetWall> walls)
     Info<< "    lattice nodes inside level-set walls and obstacles: "
         << returnReduce(label(system_.levelSetWalls().nodesInside()), sumOp<label>())
         << (Pstream::parRun() ? " (summed over the processors' boxes)" : "") << nl;
+    // Moving obstacles start where they are at the start time (a restart)
+    wallTime_ = mesh_.time().value();
+    if (wallsMove_) moveWalls(wallTime_, wallTime_);
+}
+
+void Foam::mpmModel::moveWalls(scalar t0, scalar t1)
+{
+    const label n = wallVelocity_.size();
+    std::vector<std::array<mpm::Real, 3>> d(n, {0, 0, 0}), v(n, {0, 0, 0});
+    forAll(wallVelocity_, w)
+    {
+        if (!wallVelocity_.set(w)) continue;
+        const Function1<vector>& f = wallVelocity_[w];
+        // (No integral over an empty interval: v1912's table writes out
+        // of bounds for integrate(x, x) at its first sample)
+        const vector disp(t0 > 0 ? f.integrate(0, t0) : vector::zero);
+        const vector vel(t1 > t0 ? vector(f.integrate(t0, t1)/(t1 - t0)) : f.value(t0));
+        for (direction a = 0; a < 3; ++a) { d[w][a] = disp[a]; v[w][a] = vel[a]; }
+    }
+    system_.moveLevelSetWalls(d, v);
 }
 
 void Foam::mpmModel::checkPointsOutsideObstacles() const
