@@ -122,17 +122,7 @@ w=$(echo "$out" | awk 'NR>2{if($2>m)m=$2}END{print m+0}')
 check "graded settling on 2 ranks: points within 1e-9 of serial ($w)" "i == 1 and w <= 1e-9" i="${ids:-0}" w="$w"
 (cd "$par" && reconstructPar -latestTime -fields '(U p alpha.solid)' > log.reconstructPar 2>&1) \
     || { echo "FAIL: reconstructPar"; failures=$((failures + 1)); }
-f=$("$PY" - "$serial" "$par" "$tEnd" <<'PYEOF'
-import sys
-import numpy as np, mpmPost
-d = 0
-for f in ("U", "p", "alpha.solid"):
-    a = mpmPost.read_internal_field(sys.argv[1], sys.argv[3], f)
-    b = mpmPost.read_internal_field(sys.argv[2], sys.argv[3], f)
-    d = max(d, np.abs(a - b).max()/np.abs(a).max())
-print(d)
-PYEOF
-)
+f=$(fluidDiff "$serial" "$par" "$tEnd")
 check "graded settling on 2 ranks: fluid U, p, alpha.solid within 1e-9 of serial ($f)" "f <= 1e-9" f="${f:-1}"
 read -r dv nv <<< "$(grainVolume "$par")"
 check "graded settling on 2 ranks: grain volume on the cells = the points' at $nv logged steps (max $dv)" "d <= 1e-12 and n >= 10" d="$dv" n="$nv"

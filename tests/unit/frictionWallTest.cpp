@@ -28,11 +28,6 @@ BoundarySpec frictionFloor(const Lattice& L, Real mu)
     return b;
 }
 
-struct History
-{
-    std::vector<Real> t, u;     // time, mean point velocity along the floor
-};
-
 // A 2D block of 2 x 2 points per cell on the floor, under gravity
 // g (sin theta, -cos theta) (the floor stays the lattice's y- side), with
 // initial velocity u0 along the floor and the geostatic normal stress of a
@@ -73,33 +68,6 @@ History slideBlock(Real mu, Real thetaDeg, Real u0, Real tEnd, const StepOptions
         s.step(dt);
     }
     return r;
-}
-
-// Least-squares slope of u(t) over t in [t0, t1]
-Real slope(const History& r, Real t0, Real t1)
-{
-    Real n = 0, st = 0, su = 0, stt = 0, stu = 0;
-    for (std::size_t i = 0; i < r.t.size(); ++i)
-    {
-        if (r.t[i] < t0 || r.t[i] > t1) continue;
-        n += 1; st += r.t[i]; su += r.u[i]; stt += r.t[i]*r.t[i]; stu += r.t[i]*r.u[i];
-    }
-    return (n*stu - st*su)/(n*stt - st*st);
-}
-
-std::vector<std::pair<const char*, StepOptions>> algorithms()
-{
-    StepOptions tutorial;                 // the granular tutorials': cubic, APIC, USL
-    tutorial.transfer = Transfer::apic;
-    StepOptions musl = tutorial;
-    musl.stressUpdate = StressUpdate::MUSL;
-    musl.shape = ShapeKind::quadraticBSpline;
-    StepOptions usf = tutorial;
-    usf.stressUpdate = StressUpdate::USF;
-    usf.shape = ShapeKind::linearHat;
-    usf.transfer = Transfer::picFlip;
-    usf.flipRatio = 0.95;
-    return {{"cubic APIC USL", tutorial}, {"quadratic APIC MUSL", musl}, {"linear PICFLIP USF", usf}};
 }
 
 } // namespace

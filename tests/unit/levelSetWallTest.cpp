@@ -44,8 +44,6 @@ WallCondition condition(Real mu)
 // cos(theta) (H - r), the in-plane ones nu/(1 - nu) of it), so it does not
 // bounce on landing. Returns the mass-weighted mean velocity along t over
 // time.
-struct History { std::vector<Real> t, u; };
-
 History slideOnPlane
 (
     Real mu, Real thetaDeg, Real u0, Real tEnd, const StepOptions& base,
@@ -104,32 +102,6 @@ History slideDownSlope(Real mu, Real thetaDeg, Real tEnd, const StepOptions& o)
     const Real top = 3*std::tan(thetaDeg*M_PI/180) + 0.5;
     const int ny = int(std::ceil((top + 0.4)/h));
     return slideOnPlane(mu, thetaDeg, 0, tEnd, o, 60, ny, {0, top, 0}, 0.3);
-}
-
-Real slope(const History& r, Real t0, Real t1)
-{
-    Real n = 0, st = 0, su = 0, stt = 0, stu = 0;
-    for (std::size_t i = 0; i < r.t.size(); ++i)
-    {
-        if (r.t[i] < t0 || r.t[i] > t1) continue;
-        n += 1; st += r.t[i]; su += r.u[i]; stt += r.t[i]*r.t[i]; stu += r.t[i]*r.u[i];
-    }
-    return (n*stu - st*su)/(n*stt - st*st);
-}
-
-std::vector<std::pair<const char*, StepOptions>> algorithms()
-{
-    StepOptions tutorial;
-    tutorial.transfer = Transfer::apic;
-    StepOptions musl = tutorial;
-    musl.stressUpdate = StressUpdate::MUSL;
-    musl.shape = ShapeKind::quadraticBSpline;
-    StepOptions usf = tutorial;
-    usf.stressUpdate = StressUpdate::USF;
-    usf.shape = ShapeKind::linearHat;
-    usf.transfer = Transfer::picFlip;
-    usf.flipRatio = 0.95;
-    return {{"cubic APIC USL", tutorial}, {"quadratic APIC MUSL", musl}, {"linear PICFLIP USF", usf}};
 }
 
 const Real angles[] = {20, 25, 37};

@@ -50,4 +50,39 @@ inline void seedRandom(MpmSystem& s, Index n, Real lo, Real hi, unsigned seed = 
     }
 }
 
+// A time series: time and a mean point velocity (the wall tests)
+struct History
+{
+    std::vector<Real> t, u;
+};
+
+// Least-squares slope of u(t) over t in [t0, t1]
+inline Real slope(const History& r, Real t0, Real t1)
+{
+    Real n = 0, st = 0, su = 0, stt = 0, stu = 0;
+    for (std::size_t i = 0; i < r.t.size(); ++i)
+    {
+        if (r.t[i] < t0 || r.t[i] > t1) continue;
+        n += 1; st += r.t[i]; su += r.u[i]; stt += r.t[i]*r.t[i]; stu += r.t[i]*r.u[i];
+    }
+    return (n*stu - st*su)/(n*stt - st*st);
+}
+
+// The three algorithms the wall tests run: the granular tutorials' (cubic,
+// APIC, USL), quadratic APIC MUSL, and linear hats with FLIP and USF
+inline std::vector<std::pair<const char*, StepOptions>> algorithms()
+{
+    StepOptions tutorial;
+    tutorial.transfer = Transfer::apic;
+    StepOptions musl = tutorial;
+    musl.stressUpdate = StressUpdate::MUSL;
+    musl.shape = ShapeKind::quadraticBSpline;
+    StepOptions usf = tutorial;
+    usf.stressUpdate = StressUpdate::USF;
+    usf.shape = ShapeKind::linearHat;
+    usf.transfer = Transfer::picFlip;
+    usf.flipRatio = 0.95;
+    return {{"cubic APIC USL", tutorial}, {"quadratic APIC MUSL", musl}, {"linear PICFLIP USF", usf}};
+}
+
 } // namespace mpm::test

@@ -172,10 +172,12 @@ void MpmSystem::mapToGrid()
     });
 }
 
-void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
+// fn(p, nodes) for every point, blocks of one colour in parallel (plain
+// stores into node arrays are safe), where nodes(visit) calls visit(I, N)
+// for each node of p's stencil: the P2G loop of the grain-volume maps
+template<class Fn>
+void MpmSystem::forEachPointStencil(Fn&& fn)
 {
-    out.assign(materials_.size(), std::vector<Real>(lattice_.nNodes, 0.0));
-    const std::vector<Real> invRho0 = inverseDensities();
     const auto& P = particles_;
     dispatch([&](auto k, auto d)
     {
@@ -186,11 +188,25 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
         {
             Stencil<K, D> s;
             s.compute(lattice_, P.x[0][p], P.x[1][p], P.x[2][p]);
-            const int m = P.material[p];
-            const Real v = P.mass[p]*invRho0[m];
-            Real* o = out[m].data();
-            s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { o[I] += N*v; });
+            fn(p, [&](auto&& visit)
+            {
+                s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { visit(I, N); });
+            });
         });
+    });
+}
+
+void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
+{
+    out.assign(materials_.size(), std::vector<Real>(lattice_.nNodes, 0.0));
+    const std::vector<Real> invRho0 = inverseDensities();
+    const auto& P = particles_;
+    forEachPointStencil([&](Index p, auto&& nodes)
+    {
+        const int m = P.material[p];
+        const Real v = P.mass[p]*invRho0[m];
+        Real* o = out[m].data();
+        nodes([&](Index I, Real N) { o[I] += N*v; });
     });
     for (auto& o : out)
     {
@@ -204,24 +220,16 @@ void MpmSystem::spreadGrainVolume(const std::vector<double>& coverage, std::vect
     out.assign(std::size_t(lattice_.nNodes), 0.0);
     const std::vector<Real> invRho0 = inverseDensities();
     const auto& P = particles_;
-    dispatch([&](auto k, auto d)
+    Real* o = out.data();
+    forEachPointStencil([&](Index p, auto&& nodes)
     {
-        using K = decltype(k);
-        constexpr int D = decltype(d)::value;
-        binning_.build(lattice_, particles_);
-        Real* o = out.data();
-        forEachPointColoured([&](Index p)
-        {
-            Stencil<K, D> s;
-            s.compute(lattice_, P.x[0][p], P.x[1][p], P.x[2][p]);
-            Real covered = 0;
-            s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { covered += N*coverage[I]; });
-            // A point inside the mesh has its own lattice cell partly
-            // covered, and a weight there
-            if (!(covered > 0)) return;
-            const Real v = P.mass[p]*invRho0[P.material[p]]/covered;
-            s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { o[I] += N*v; });
-        });
+        Real covered = 0;
+        nodes([&](Index I, Real N) { covered += N*coverage[I]; });
+        // A point inside the mesh has its own lattice cell partly
+        // covered, and a weight there
+        if (!(covered > 0)) return;
+        const Real v = P.mass[p]*invRho0[P.material[p]]/covered;
+        nodes([&](Index I, Real N) { o[I] += N*v; });
     });
 }
 

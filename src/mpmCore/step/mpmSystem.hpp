@@ -251,6 +251,8 @@ private:
     // n >= parallelThreshold)
     bool worthThreads(Index n) const;
     template<class Fn> void forEachPointColoured(Fn&& fn) const;
+    // fn(p, nodes): each point with its stencil (the grain-volume maps)
+    template<class Fn> void forEachPointStencil(Fn&& fn);
     // Bins the points and builds this step's active region
     void binPoints();
     // fn(node) for every node of the active region (threaded when long)

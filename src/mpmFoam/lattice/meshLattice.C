@@ -187,6 +187,14 @@ void Foam::meshLattice::buildOwn(scalar h)
             << " bounding box " << bb << ": give a smaller lattice spacing)"
             << exit(FatalError);
     }
+    mapCellCentres();
+    if (Pstream::parRun()) decomposeOwn();
+}
+
+void Foam::meshLattice::mapCellCentres()
+{
+    // A uniform box's cells are one node each; any other mesh's many cells
+    // may share the lattice cell holding their centres
     cellNode_.setSize(mesh_.nCells());
     cellIjk_.resize(mesh_.nCells());
     forAll(mesh_.cellCentres(), celli)
@@ -195,8 +203,18 @@ void Foam::meshLattice::buildOwn(scalar h)
         indicesOf(mesh_.cellCentres()[celli], ijk);
         cellIjk_[celli] = {int(ijk[0]), int(ijk[1]), int(ijk[2])};
         cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
+        if (!cellsAreNodes_) continue;
+        const label lin = lattice_.cellIndex(ijk[0], ijk[1], ijk[2]);
+        const label other = latticeCell_.lookup(lin, -1);
+        if (other != -1)
+        {
+            FatalErrorInFunction
+                << "Cells " << other << " and " << celli
+                << " map to the same lattice node: the mesh is not a "
+                << "uniform Cartesian box" << exit(FatalError);
+        }
+        latticeCell_.set(lin, celli);
     }
-    if (Pstream::parRun()) decomposeOwn();
 }
 
 void Foam::meshLattice::decomposeOwn()
@@ -303,26 +321,7 @@ void Foam::meshLattice::buildFromCells(const vector& h0)
     {
         FatalErrorInFunction << e.what() << exit(FatalError);
     }
-
-    cellNode_.setSize(mesh_.nCells());
-    cellIjk_.resize(mesh_.nCells());
-    forAll(mesh_.cellCentres(), celli)
-    {
-        label ijk[3];
-        indicesOf(mesh_.cellCentres()[celli], ijk);
-        cellIjk_[celli] = {int(ijk[0]), int(ijk[1]), int(ijk[2])};
-        const label lin = lattice_.cellIndex(ijk[0], ijk[1], ijk[2]);
-        const label other = latticeCell_.lookup(lin, -1);
-        if (other != -1)
-        {
-            FatalErrorInFunction
-                << "Cells " << other << " and " << celli
-                << " map to the same lattice node: the mesh is not a "
-                << "uniform Cartesian box" << exit(FatalError);
-        }
-        latticeCell_.set(lin, celli);
-        cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
-    }
+    mapCellCentres();
 }
 
 std::vector<std::array<int, 3>> Foam::meshLattice::ownedLatticeCells() const

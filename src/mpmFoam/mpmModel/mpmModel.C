@@ -380,25 +380,37 @@ void Foam::mpmModel::updateFields()
 {
     const mpm::GridState& g = system_.grid();
     const labelList& node = lattice_.cellNode();
-    // A uniform box's cell is its node's lattice cell; any other mesh's
-    // cell samples the lattice cell holding its centre
-    const bool same = lattice_.cellsAreNodes();
-    // Decomposed, the lattice cell may be another rank's: its halo copy
-    // here holds the owner's values once they are sent (the velocity is)
-    if (!same && Pstream::parRun()) system_.copyMassToHalo();
+    if (!lattice_.cellsAreNodes())
+    {
+        // Any other mesh: the lattice cells a cell overlaps, by their
+        // overlaps (the exchange's weights, meshLattice::forEachOverlap):
+        // the solid volume spread evenly over each lattice cell, the
+        // velocity mass-weighted. Decomposed, an overlapped lattice cell
+        // may be another rank's: its halo copy holds the owner's values
+        // once they are sent (the velocity is).
+        if (Pstream::parRun()) system_.copyMassToHalo();
+        const scalar VL = lattice_.cellVolume();
+        forAll(node, celli)
+        {
+            scalar vol = 0, m = 0;
+            vector p(Zero);
+            lattice_.forEachOverlap(celli, [&](label I, scalar T)
+            {
+                vol += T*g.volume[I];
+                m += T*g.mass[I];
+                p += T*g.mass[I]*vector(g.velocity[0][I], g.velocity[1][I], g.velocity[2][I]);
+            });
+            alphaSolid_[celli] = vol/VL;
+            Usolid_[celli] = m > 0 ? p/m : vector::zero;
+        }
+        alphaSolid_.correctBoundaryConditions();
+        Usolid_.correctBoundaryConditions();
+        return;
+    }
     forAll(node, celli)
     {
         const label I = node[celli];
-        if (I < 0)
-        {
-            // Beyond this rank's box (a mesh cell much smaller than the
-            // lattice's, far from the lattice cells this rank owns)
-            alphaSolid_[celli] = 0;
-            Usolid_[celli] = Zero;
-            continue;
-        }
-        alphaSolid_[celli] = g.volume[I]
-           /(same ? mesh_.cellVolumes()[celli] : lattice_.cellVolume());
+        alphaSolid_[celli] = g.volume[I]/mesh_.cellVolumes()[celli];
         Usolid_[celli] = vector(g.velocity[0][I], g.velocity[1][I], g.velocity[2][I]);
     }
     alphaSolid_.correctBoundaryConditions();
