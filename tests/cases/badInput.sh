@@ -13,6 +13,11 @@ sed -i 's/model   linearElastic;/model   linearElastik;/' "$(props "$c")"
 expectFailure "unknown model" "Unknown model 'linearElastik'" runIn "$c" mpmFoam
 expectFailure "unknown model lists valid models" "Valid models: linearElastic, neoHookean, newtonianFluid, druckerPrager, muIRheology, dilute" runIn "$c" mpmFoam
 expectFailure "unknown model names the file" "constant/mpmProperties" runIn "$c" mpmFoam
+expectFailure "unknown model suggests the closest" "Unknown model 'linearElastik' for material bar; did you mean 'linearElastic'\\?" runIn "$c" mpmFoam
+
+c=$(freshCopy modelCase)
+sed -i 's/model   linearElastic;/model   LinearElastic;/' "$(props "$c")"
+expectFailure "a model differing only in case is suggested" "Unknown model 'LinearElastic' for material bar; did you mean 'linearElastic'\\?" runIn "$c" mpmFoam
 
 c=$(freshCopy missingCoefficient)
 sed -i '/^        E       100;/d' "$(props "$c")"
@@ -30,6 +35,10 @@ c=$(freshCopy unknownShape)
 sed -i 's/^shapeFunction .*/shapeFunction   cubic;/' "$(props "$c")"
 expectFailure "unknown shape function" "Unknown shapeFunction 'cubic'" runIn "$c" mpmFoam
 expectFailure "shape function choices" "Valid shapeFunction choices: linearHat quadraticBSpline cubicBSpline" runIn "$c" mpmFoam
+
+c=$(freshCopy shapeCase)
+sed -i 's/^shapeFunction .*/shapeFunction   CubicBSpline;/' "$(props "$c")"
+expectFailure "a choice differing only in case is suggested" "Unknown shapeFunction 'CubicBSpline'; did you mean 'cubicBSpline'\\?" runIn "$c" mpmFoam
 
 c=$(freshCopy unknownBackend)
 echo "backend gpu;" >> "$(props "$c")"

@@ -46,6 +46,15 @@ else
     echo "FAIL: pure MPM with etc/caseDicts/mpm files"; tail -10 "$p/log.mpmFoam"; failures=$((failures + 1))
 fi
 
+# What runs: the axial bar's points are far below threadMinLoopSize, so with
+# two threads available the log says the point loops run on one
+(cd "$p" && OMP_NUM_THREADS=2 mpmFoam > log.threads 2>&1)
+if grep -q "OpenMP threads: 2 (the point loops run on one thread: [0-9]* points, below threadMinLoopSize 50000)" "$p/log.threads"; then
+    echo "PASS: the log says a small case's loops run on one thread: $(grep '^Material points' "$p/log.threads")"
+else
+    echo "FAIL: the thread line"; grep "^Material points" "$p/log.threads"; failures=$((failures + 1))
+fi
+
 help=$(mpmFoam -help 2>&1)
 if echo "$help" | grep -q "Material Point Method solver" && echo "$help" | tr '\n' ' ' | grep -q "Annotated example case files: \$MPMFOAM_DIR/etc/caseDicts"; then
     echo "PASS: mpmFoam -help says what it does and where the annotated files are"

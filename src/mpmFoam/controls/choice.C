@@ -1,4 +1,6 @@
 #include "choice.H"
+#include "knownKeywords.H"
+#include <sstream>
 #include <cctype>
 #include <cmath>
 
@@ -102,4 +104,14 @@ void Foam::checkSelection
                 << keyword << " " << selected << exit(FatalIOError);
         }
     }
+}
+
+
+std::string Foam::choiceSuggestion(const word& given, const char* validNames)
+{
+    wordList names;
+    std::istringstream is(validNames);
+    for (std::string n; is >> n;) names.append(word(n));
+    const word close(closestWord(given, names));
+    return close.empty() ? "" : "; did you mean '" + close + "'?";
 }

@@ -12,6 +12,22 @@ std::string validModelNames()
     return mpm::registryNames(mpm::availableLaws());
 }
 
+// "; did you mean 'druckerPrager'?" for a near miss (a difference of case
+// alone included), or nothing
+std::string modelSuggestion(const Foam::word& given)
+{
+    using namespace Foam;
+    wordList names;
+    std::istringstream is(validModelNames());
+    for (std::string n; is >> n;)
+    {
+        if (!n.empty() && n.back() == ',') n.pop_back();
+        names.append(word(n));
+    }
+    const word close(closestWord(given, names));
+    return close.empty() ? "" : "; did you mean '" + close + "'?";
+}
+
 // The keywords of a material's drag sub-dictionary, checked here with the
 // material's own (coupled or not, and in mpmSetParticles too) rather than
 // only when a coupled run reads it. An unknown or missing drag model is
@@ -61,7 +77,8 @@ Foam::materialLibrary::materialLibrary(const dictionary& mpmDict, bool echo)
         if (!info)
         {
             FatalIOErrorInFunction(d)
-                << "Unknown model '" << model << "' for material " << name << nl
+                << "Unknown model '" << model << "' for material " << name
+                << modelSuggestion(model).c_str() << nl
                 << "Valid models: " << validModelNames().c_str()
                 << exit(FatalIOError);
         }

@@ -114,6 +114,23 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     Info<< "Material points: " << returnReduce(label(P.size()), sumOp<label>())
         << ", OpenMP threads: " << omp_get_max_threads();
     if (Pstream::parRun()) Info<< " per processor, processors: " << Pstream::nProcs();
+    {
+        // What actually runs: a loop shorter than threadMinLoopSize stays on
+        // one thread, so a small case uses one whatever OMP_NUM_THREADS says
+        const label most = returnReduce(label(P.size()), maxOp<label>());
+        const bool openmp = controls_.step.backend == mpm::Backend::openmp;
+        if (!openmp)
+        {
+            Info<< " (backend " << mpm::backendName(controls_.step.backend)
+                << ": its point and node loops do not use them)";
+        }
+        else if (omp_get_max_threads() > 1 && most < label(mpm::MpmSystem::parallelThreshold))
+        {
+            Info<< " (the point loops run on one thread: " << most
+                << " points, below threadMinLoopSize "
+                << label(mpm::MpmSystem::parallelThreshold) << ")";
+        }
+    }
     Info<< nl;
     reportBalance(Info);
     Info<< endl;
