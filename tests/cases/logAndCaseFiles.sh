@@ -55,6 +55,16 @@ else
     echo "FAIL: the thread line"; grep "^Material points" "$p/log.threads"; failures=$((failures + 1))
 fi
 
+# A tutorial copied out of the tree: after `source etc/bashrc` in a clean
+# shell, its Python script runs when called directly (the project's modules
+# are importable: issue 28, item 9)
+out=$(cd "$p" && env -i HOME="$HOME" PATH=/usr/bin:/bin bash -c ". '$MPMFOAM_ROOT/etc/bashrc' > /dev/null 2>&1; '$PY' plotAxialBar.py --no-plot" 2>&1)
+if [ $? -eq 0 ] && ! echo "$out" | grep -q "ModuleNotFoundError"; then
+    echo "PASS: a copied tutorial's script runs directly after source etc/bashrc: $(echo "$out" | head -1)"
+else
+    echo "FAIL: a copied tutorial's script"; echo "$out" | tail -5; failures=$((failures + 1))
+fi
+
 help=$(mpmFoam -help 2>&1)
 if echo "$help" | grep -q "Material Point Method solver" && echo "$help" | tr '\n' ' ' | grep -q "Annotated example case files: \$MPMFOAM_DIR/etc/caseDicts"; then
     echo "PASS: mpmFoam -help says what it does and where the annotated files are"
