@@ -83,7 +83,7 @@ check "h5dump: units and description on every point dataset, stress in Pa" \
 # ParaView (XDMF Reader) against the OpenFOAM output of the same run
 if command -v pvbatch > /dev/null && command -v xvfb-run > /dev/null; then
     xvfb-run -a pvbatch "$MPMFOAM_ROOT/tests/cases/hdf5/readXdmf.py" "$h5/materialPoints.xmf" "$SCRATCH/xdmf.npz" 2>&1 | grep "^XDMF" | sed 's/^/    /'
-    read -r nT nP dS dA dU <<< "$("$PY" - "$foam" "$tEnd" "$SCRATCH/xdmf.npz" <<'PYEOF'
+    read -r nT nP dS dA dU t0 stable <<< "$("$PY" - "$foam" "$tEnd" "$SCRATCH/xdmf.npz" <<'PYEOF'
 import sys
 import numpy as np, mpmPost
 case, t, npz = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -97,11 +97,14 @@ a = mpmPost.read_internal_field(case, t, "alpha.solid")   # blockMesh: x fastest
 u = mpmPost.read_internal_field(case, t, "U.solid")
 dA = np.abs(x["alpha.solid"] - a).max()/np.abs(a).max()
 dU = np.abs(x["U.solid"] - u).max()/np.abs(u).max()
-print(len(x["times"]), x["nPoints"], dS, dA, dU)
+stable = int(all(n == "materialPoints,lattice" for n in x["blockNames"]))
+print(len(x["times"]), x["nPoints"], dS, dA, dU, x["times"][0], stable)
 PYEOF
 )"
-    check "ParaView's XDMF Reader: 2 times, every point at the last" \
-        "nT == 2 and nP == 1452" nT="${nT:-0}" nP="${nP:-0}"
+    check "ParaView's XDMF Reader: the seeded start and 2 writes, every point at the last" \
+        "nT == 3 and nP == 1452" nT="${nT:-0}" nP="${nP:-0}"
+    check "ParaView's XDMF series starts at t = 0 and names its blocks materialPoints and lattice at every time (issue 28, item 2)" \
+        "t0 == 0 and s == 1" t0="${t0:-1}" s="${stable:-0}"
     check "ParaView's stress tensors equal OpenFOAM's symmTensor (component order)" \
         "d <= 1e-15" d="${dS:-1}"
     check "ParaView's alpha.solid and U.solid equal the volFields (cell order)" \

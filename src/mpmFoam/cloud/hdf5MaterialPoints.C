@@ -126,9 +126,42 @@ Foam::hdf5MaterialPoints::checkpoints(const Time& runTime)
 
 void Foam::hdf5MaterialPoints::write(const mpm::Particles& P)
 {
+    writeFile(P, filePrefix + mesh_.time().timeName() + ".h5");
+}
+
+namespace
+{
+    const Foam::word seededName("seededPoints.h5");
+}
+
+void Foam::hdf5MaterialPoints::writeStart(const mpm::Particles& P)
+{
+    if (readCloud_) writeFile(P, seededName);
+}
+
+void Foam::hdf5MaterialPoints::writeSeries(const Time& runTime) const
+{
+    List<Tuple2<scalar, fileName>> files(checkpoints(runTime));
+    const fileName seed(directory(runTime)/seededName);
+    if (isFile(seed))
+    {
+        // Its time, from the file: before the first checkpoint, or left out
+        const scalar t = hdf5File(seed, hdf5File::mode::read, false).doubleAttribute("/", "time").at(0);
+        if (files.empty() || t < files.first().first())
+        {
+            List<Tuple2<scalar, fileName>> all(1, Tuple2<scalar, fileName>(t, seededName));
+            all.append(files);
+            files.transfer(all);
+        }
+    }
+    writeXdmfSeries(runTime.globalPath()/"materialPoints.xmf", files, "HDF5");
+}
+
+void Foam::hdf5MaterialPoints::writeFile(const mpm::Particles& P, const word& name)
+{
     const Time& runTime = mesh_.time();
     const fileName dir(directory(runTime));
-    const fileName final(dir/(filePrefix + runTime.timeName() + ".h5"));
+    const fileName final(dir/name);
     const fileName tmp(final + ".tmp");
     if (Pstream::master()) mkDir(dir);
     comm_.sum(std::int64_t(0));   // the directory exists before anyone opens
@@ -263,11 +296,7 @@ void Foam::hdf5MaterialPoints::write(const mpm::Particles& P)
             FatalErrorInFunction
                 << "Cannot rename " << tmp << " to " << final << exit(FatalError);
         }
-        guarded("Writing the XDMF series", [&]
-        {
-            writeXdmfSeries(runTime.globalPath()/"materialPoints.xmf",
-                checkpoints(runTime), "HDF5");
-        });
+        guarded("Writing the XDMF series", [&] { writeSeries(runTime); });
     }
 }
 
@@ -330,6 +359,7 @@ void Foam::hdf5MaterialPoints::read(mpm::Particles& P)
         Info<< "No HDF5 checkpoint at time " << runTime.timeName()
             << ": reading the lagrangian cloud" << nl;
         readMaterialPoints(mesh_, P, materialNames_);
+        readCloud_ = true;
         return;
     }
 

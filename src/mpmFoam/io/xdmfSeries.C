@@ -46,21 +46,21 @@ void Foam::writeXdmfSeries
     const fileName& dataDir
 )
 {
-    std::ostringstream os;
-    os.precision(17);
-    os  << "<?xml version=\"1.0\" ?>\n"
-        << "<!-- mpmFoam HDF5 checkpoints: open in ParaView with \"XDMF Reader\" -->\n"
-        << "<Xdmf Version=\"2.0\">\n<Domain>\n"
-        << "<Grid Name=\"mpmFoam\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    // One temporal collection per block (the points, the lattice), each
+    // a grid per time: ParaView's XDMF Reader then names the blocks
+    // materialPoints and lattice at every time (a temporal collection of
+    // spatial ones gave materialPoints[1], [2], ... from the second time)
+    std::ostringstream points, lattice;
+    points.precision(17);
+    lattice.precision(17);
     for (const auto& f : files)
     {
         const std::string ref = dataDir/f.second();
         const hdf5File h5(xmf.path()/dataDir/f.second(), hdf5File::mode::read, false);
         const std::uint64_t n = h5.int64Attribute("/materialPoints", "count").at(0);
-        os  << "<Grid Name=\"" << f.second().lessExt() << "\" GridType=\"Collection\""
-            << " CollectionType=\"Spatial\">\n<Time Value=\"" << f.first() << "\"/>\n";
-
-        os  << "<Grid Name=\"materialPoints\" GridType=\"Uniform\">\n"
+        points
+            << "<Grid Name=\"materialPoints\" GridType=\"Uniform\">\n"
+            << "<Time Value=\"" << f.first() << "\"/>\n"
             << "<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
             << "\" NodesPerElement=\"1\"/>\n<Geometry GeometryType=\"XYZ\">"
             << dataItem(h5, ref, "/materialPoints/position") << "</Geometry>\n";
@@ -69,18 +69,20 @@ void Foam::writeXdmfSeries
         for (std::size_t i = 0; i < names.size(); ++i)
         {
             if (names[i] == "position") continue;
-            os  << "<Attribute Name=\"" << names[i] << "\" AttributeType=\""
+            points
+                << "<Attribute Name=\"" << names[i] << "\" AttributeType=\""
                 << attributeType(comps[i]) << "\" Center=\"Node\">"
                 << dataItem(h5, ref, "/materialPoints/" + names[i]) << "</Attribute>\n";
         }
-        os  << "</Grid>\n";
-
+        points << "</Grid>\n";
         // Lattice: XDMF gives CoRectMesh sizes and vectors slowest axis
         // first (z y x)
         const std::vector<std::int64_t> cells(h5.int64Attribute("/lattice", "cells"));
         const std::vector<double> origin(h5.doubleAttribute("/lattice", "origin"));
         const std::vector<double> spacing(h5.doubleAttribute("/lattice", "spacing"));
-        os  << "<Grid Name=\"lattice\" GridType=\"Uniform\">\n"
+        lattice
+            << "<Grid Name=\"lattice\" GridType=\"Uniform\">\n"
+            << "<Time Value=\"" << f.first() << "\"/>\n"
             << "<Topology TopologyType=\"3DCoRectMesh\" Dimensions=\""
             << cells[2] + 1 << " " << cells[1] + 1 << " " << cells[0] + 1 << "\"/>\n"
             << "<Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
@@ -93,13 +95,22 @@ void Foam::writeXdmfSeries
         const std::vector<std::int64_t> cellComps(h5.int64Attribute("/lattice", "components"));
         for (std::size_t i = 0; i < cellNames.size(); ++i)
         {
-            os  << "<Attribute Name=\"" << cellNames[i] << "\" AttributeType=\""
+            lattice
+                << "<Attribute Name=\"" << cellNames[i] << "\" AttributeType=\""
                 << attributeType(cellComps[i]) << "\" Center=\"Cell\">"
                 << dataItem(h5, ref, "/lattice/" + cellNames[i]) << "</Attribute>\n";
         }
-        os  << "</Grid>\n</Grid>\n";
+        lattice << "</Grid>\n";
     }
-    os  << "</Grid>\n</Domain>\n</Xdmf>\n";
+    std::ostringstream os;
+    os  << "<?xml version=\"1.0\" ?>\n"
+        << "<!-- mpmFoam HDF5 checkpoints: open in ParaView with \"XDMF Reader\" -->\n"
+        << "<Xdmf Version=\"2.0\">\n<Domain>\n"
+        << "<Grid Name=\"materialPoints\" GridType=\"Collection\" CollectionType=\"Temporal\">\n"
+        << points.str() << "</Grid>\n"
+        << "<Grid Name=\"lattice\" GridType=\"Collection\" CollectionType=\"Temporal\">\n"
+        << lattice.str() << "</Grid>\n"
+        << "</Domain>\n</Xdmf>\n";
 
     const fileName tmp(xmf + ".tmp");
     {

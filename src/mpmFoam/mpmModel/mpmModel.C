@@ -136,6 +136,8 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     Info<< endl;
     system_.mapToGrid();
     updateFields();
+    // The series of the point output starts at the start time
+    pointFormat_->writeStart(system_.particles());
     readDiagnostics();
 }
 

@@ -19,12 +19,18 @@ from vtk.util.numpy_support import vtk_to_numpy
 reader = XDMFReader(FileNames=[sys.argv[1]])
 reader.UpdatePipelineInformation()
 times = list(reader.TimestepValues)
+# The block names at every time, as a pipeline selecting /Root/<name>
+# sees them (they must not change from one time to the next)
+names = []
+for t in times:
+    reader.UpdatePipeline(t)
+    d = servermanager.Fetch(reader)
+    names.append(",".join(d.GetMetaData(b).Get(d.NAME()) for b in range(d.GetNumberOfBlocks())))
 reader.UpdatePipeline(times[-1])
 data = servermanager.Fetch(reader)
 blocks = {}
 for b in range(data.GetNumberOfBlocks()):
-    name = data.GetMetaData(b).Get(data.NAME()).split("[")[0]
-    blocks[name] = data.GetBlock(b)
+    blocks[data.GetMetaData(b).Get(data.NAME())] = data.GetBlock(b)
 pts, lat = blocks["materialPoints"], blocks["lattice"]
 pd, cd = pts.GetPointData(), lat.GetCellData()
 out = {
@@ -36,9 +42,11 @@ out = {
     "bounds": np.array(lat.GetBounds()),
     "dimensions": np.array(lat.GetDimensions()),
     "cellArrays": np.array([cd.GetArrayName(i) for i in range(cd.GetNumberOfArrays())]),
+    "blockNames": np.array(names),
 }
 for f in ("alpha.solid", "U.solid"):
     out[f] = vtk_to_numpy(cd.GetArray(f))
 np.savez(sys.argv[2], **out)
-print("XDMF: %d times, last %g: %d points, lattice %s, cell arrays %s"
-      % (len(times), times[-1], out["nPoints"], out["dimensions"], list(out["cellArrays"])))
+print("XDMF: %d times (%s), last %g: %d points, lattice %s, cell arrays %s; blocks %s"
+      % (len(times), " ".join("%g" % t for t in times), times[-1], out["nPoints"], out["dimensions"],
+         list(out["cellArrays"]), " | ".join(names)))
