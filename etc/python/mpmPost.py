@@ -131,6 +131,21 @@ def dict_scalar(path, key):
     return float(m.group(1))
 
 
+def write_stl(path, triangles, name="surface"):
+    """Writes triangles, a sequence of three (x, y, z) corners each, as an
+    ASCII STL solid called name. The facet normals are left zero: OpenFOAM
+    takes the orientation from the corners' order (counter-clockwise seen
+    from the side the normal points to)."""
+    with open(path, "w") as f:
+        f.write("solid %s\n" % name)
+        for t in triangles:
+            f.write(" facet normal 0 0 0\n  outer loop\n")
+            for v in t:
+                f.write("   vertex %.10g %.10g %.10g\n" % tuple(v))
+            f.write("  endloop\n endfacet\n")
+        f.write("endsolid %s\n" % name)
+
+
 def plot_parser(description=None):
     """Command line of the tutorials' plot scripts: --case (default '.') and
     --no-plot (print the figures only); add a script's own options to it."""

@@ -26,6 +26,7 @@ stlBox()
 {
     "$PY" - "$@" <<'PYEOF'
 import sys
+import mpmPost
 f, lo, hi = sys.argv[1], [float(v) for v in sys.argv[2:5]], [float(v) for v in sys.argv[5:8]]
 mode = sys.argv[8] if len(sys.argv) > 8 else ""
 c = [[(lo, hi)[(i >> a) & 1][a] for a in range(3)] for i in range(8)]
@@ -35,13 +36,7 @@ for q in quads:
     tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
 if mode == "open": tris = tris[2:]
 if mode == "inward": tris = [(a, c_, b) for a, b, c_ in tris]
-with open(f, "w") as out:
-    out.write("solid block\n")
-    for t in tris:
-        out.write(" facet normal 0 0 0\n  outer loop\n")
-        for v in t: out.write("   vertex %g %g %g\n" % tuple(c[v]))
-        out.write("  endloop\n endfacet\n")
-    out.write("endsolid block\n")
+mpmPost.write_stl(f, [[c[v] for v in t] for t in tris], "block")
 PYEOF
 }
 

@@ -25,6 +25,7 @@ DEOF
 "$PY" - "$c/constant/triSurface/cube.stl" <<'PYEOF'
 import sys
 import numpy as np
+import mpmPost
 lo, hi = 0.55, 0.95
 centre = np.full(3, 0.5*(lo + hi))
 tris = []
@@ -41,14 +42,7 @@ for axis in range(3):
             if np.dot(n, tri[0] - centre) < 0:      # orient outwards
                 tri = [tri[0], tri[2], tri[1]]
             tris.append(tri)
-with open(sys.argv[1], "w") as f:
-    f.write("solid cube\n")
-    for tri in tris:
-        f.write(" facet normal 0 0 0\n  outer loop\n")
-        for p in tri:
-            f.write("   vertex %.10g %.10g %.10g\n" % tuple(p))
-        f.write("  endloop\n endfacet\n")
-    f.write("endsolid cube\n")
+mpmPost.write_stl(sys.argv[1], tris, "cube")
 PYEOF
 seedCase()   # region entries -> total seeded volume printed by the python check
 {

@@ -171,6 +171,7 @@ void LevelSetWalls::build
     contact_ = contact;
     type_.clear();
     mu_.clear();
+    hasOutlets_ = false;
     for (const auto& w : walls_)
     {
         const WallType t = w.condition.type;
@@ -192,10 +193,9 @@ void LevelSetWalls::build
         }
         type_.push_back(int(t));
         mu_.push_back(t == WallType::friction ? w.condition.frictionCoefficient : 0.0);
+        hasOutlets_ = hasOutlets_ || t == WallType::outlet;
     }
     nInside_ = 0;
-    hasOutlets_ = false;
-    for (const auto& w : walls_) hasOutlets_ = hasOutlets_ || w.condition.type == WallType::outlet;
     if (walls_.empty())
     {
         phi_.clear();

@@ -132,7 +132,8 @@ public:
     // The node planes of every node of L (ghost layers included).
     // unsolved: the coordinate given to the shapes along unsolved axes (a
     // 2D case's mid-plane). Throws std::invalid_argument for a wall whose
-    // condition is not noSlip, slip or friction, or without a shape.
+    // condition is not noSlip, slip, friction or outlet (with its
+    // specCondition), or without a shape.
     // contact: nodes with phi below it get the wall condition (0: the
     // nodes inside the walls; see MpmSystem::setLevelSetWalls).
     void build
@@ -161,8 +162,6 @@ public:
     // The exact signed distance to the nearest wall at x (min over the
     // shapes), for checks of seeded points; wall: which one (or -1)
     Real distance(const Real x[3], int* wall = nullptr) const;
-
-    const std::vector<Real>& phi() const { return phi_; }
 
     // The signed distance at x and the nearest wall's normal and index,
     // combining the walls by groups (WallShape::group)

@@ -72,9 +72,10 @@ MPM_HOST_DEVICE inline Real levelSetPlaneDistance
 // its velocity loses the part that approaches the wall. Repeated so that a
 // point in a corner between two walls leaves both. A convex wall lies
 // behind each of its tangent planes, so a point outside them all is outside
-// the wall. Returns whether the point was moved. Points more than a band
-// from every wall cost one load. Returns 0 (left alone), 1 (put back), or
-// 2 + w: the point lies beyond outlet w and leaves (nothing is changed).
+// the wall. Points more than a band from every wall cost one load. dt: the
+// step's, over which a moving wall's planes move on. Returns 0 (left
+// alone), 1 (put back), or 2 + w: the point lies beyond outlet w and
+// leaves (nothing is changed).
 MPM_HOST_DEVICE inline int levelSetContainPoint
 (
     const Lattice& L, const LevelSetView& ls, const PointView& P, Index p, Real dt

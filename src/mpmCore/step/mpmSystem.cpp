@@ -150,7 +150,6 @@ void MpmSystem::binPoints()
 
 void MpmSystem::step(Real dt)
 {
-    stepDt_ = dt;
     dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
     migrate();
     ++stepCount_;
@@ -286,7 +285,7 @@ void MpmSystem::stepImpl(Real dt)
     }
     {
         ScopedTimer t(timers_.g2p);
-        movePoints();
+        movePoints(dt);
     }
 }
 
@@ -759,7 +758,7 @@ void MpmSystem::applyLevelSetWalls(std::array<std::vector<Real>, 3>& v)
     forEachActiveNode([&](Index I) { levelSetWallNode(ls, m, vp, tol, I); });
 }
 
-Index MpmSystem::containPoints()
+Index MpmSystem::containPoints(Real dt)
 {
     const LevelSetView ls = levelSet_.view();
     if (!ls) return 0;
@@ -774,7 +773,7 @@ Index MpmSystem::containPoints()
     {
         // Already leaving through a side of the box
         if (outlets && leaving_[p] >= 0) continue;
-        const int r = levelSetContainPoint(L, ls, P, p, stepDt_);
+        const int r = levelSetContainPoint(L, ls, P, p, dt);
         if (r == 1) ++moved;
         else if (r >= 2)
         {
@@ -903,7 +902,7 @@ void MpmSystem::stopIfNonFinite(Index firstBad, const char* what)
 // Moves every point by the displacement G2P stored (dt already in it).
 // A point that crosses an open face leaves the domain and is removed; one
 // that would cross a wall is put back just inside it, and counted.
-void MpmSystem::movePoints()
+void MpmSystem::movePoints(Real dt)
 {
     const PointView P = pointView(particles_, L_, dx_);
     const Lattice& L = domain_;   // walls and periodicity are the domain's
@@ -926,7 +925,7 @@ void MpmSystem::movePoints()
     }
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
-    if (!frozen) leaving += containPoints();
+    if (!frozen) leaving += containPoints(dt);
     removeLeaving(leaving);
 }
 
@@ -1069,7 +1068,7 @@ void MpmSystem::stepOnDevice(Real dt)
     }
     {
         ScopedTimer t(timers_.g2p);
-        movePointsOnDevice(apic);
+        movePointsOnDevice(apic, dt);
     }
 }
 
@@ -1085,7 +1084,7 @@ void MpmSystem::stressOnDevice(Real dt)
 
 // The advance on the device, then the points come back; the few beyond a
 // face are classified here like movePoints does (removed or held)
-void MpmSystem::movePointsOnDevice(bool apic)
+void MpmSystem::movePointsOnDevice(bool apic, Real dt)
 {
     const bool periodic[3] = {boundary_.periodic(0), boundary_.periodic(1), boundary_.periodic(2)};
     const bool frozen = options_.freezePositions;
@@ -1098,7 +1097,7 @@ void MpmSystem::movePointsOnDevice(bool apic)
     leaving_.assign(boundary_.hasOpenFaces() || levelSet_.hasOutlets() ? n : 0, -1);
     if (flagged == 0)
     {
-        if (!frozen) removeLeaving(containPoints());
+        if (!frozen) removeLeaving(containPoints(dt));
         return;
     }
     for (Index p = 0; p < n; ++p)
@@ -1113,7 +1112,7 @@ void MpmSystem::movePointsOnDevice(bool apic)
     }
     stopIfNonFinite(firstBad, "velocity");
     clamped_ += clamped;
-    if (!frozen) leaving += containPoints();
+    if (!frozen) leaving += containPoints(dt);
     removeLeaving(leaving);
 }
 #endif // MPM_HAVE_CUDA

@@ -224,7 +224,7 @@ private:
     // work on the device and the node work here, as in stepImpl
     template<class K, int D> void stepOnDevice(Real dt);
     void stressOnDevice(Real dt);
-    void movePointsOnDevice(bool apic);
+    void movePointsOnDevice(bool apic, Real dt);
     // The open condition through which a point beyond a face at x leaves,
     // or -1 when walls hold it (beyondWall: it lies past one)
     int exitCondition(const Real x[3], bool& beyondWall) const;
@@ -291,12 +291,13 @@ private:
     void applyFriction(std::array<std::vector<Real>, 3>& v, Real dt);
     // The level-set walls' node condition on an updated velocity
     void applyLevelSetWalls(std::array<std::vector<Real>, 3>& v);
-    // Puts points inside a level-set wall back on its surface; marks those
-    // beyond a level-set outlet in leaving_ (sized by the caller) and
-    // returns their number
-    Index containPoints();
+    // Puts points inside a level-set wall back on its surface (moving walls
+    // where they are at the end of the step dt); marks those beyond a
+    // level-set outlet in leaving_ (sized by the caller) and returns their
+    // number
+    Index containPoints(Real dt);
     void updateStress(Real dt);
-    void movePoints();
+    void movePoints(Real dt);
 
     Lattice domain_;
     Lattice lattice_;
@@ -304,7 +305,6 @@ private:
     Boundary boundary_;
     LevelSetWalls levelSet_;
     Index contained_ = 0;
-    Real stepDt_ = 0;     // the step's dt, for containment by moving walls
     StepOptions options_;
     Particles particles_;
     std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;

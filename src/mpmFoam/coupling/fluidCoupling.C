@@ -145,17 +145,22 @@ void Foam::fluidCoupling::setGravity(const vector& g)
 Foam::vector Foam::fluidCoupling::solidVelocity(label celli) const
 {
     const auto& v = mpm_.system().grid().velocity;
-    if (overlaps_)
-    {
-        vector u(Zero);
-        mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
-        {
-            u += T*vector(v[0][I], v[1][I], v[2][I]);
-        });
-        return u;
-    }
+    if (overlaps_) return overlapAverage(celli, v);
     const label I = mpm_.lattice().cellNode()[celli];
     return vector(v[0][I], v[1][I], v[2][I]);
+}
+
+Foam::vector Foam::fluidCoupling::overlapAverage
+(
+    label celli, const std::array<std::vector<mpm::Real>, 3>& a
+) const
+{
+    vector u(Zero);
+    mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
+    {
+        u += T*vector(a[0][I], a[1][I], a[2][I]);
+    });
+    return u;
 }
 
 void Foam::fluidCoupling::cellsToLattice
@@ -417,12 +422,7 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
             if (overlaps_)
             {
                 // The overlap average, as the drag was given to the nodes
-                vector u(Zero);
-                mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
-                {
-                    u += T*vector(c.velocityIntegral[0][I], c.velocityIntegral[1][I], c.velocityIntegral[2][I]);
-                });
-                Us[celli] = u/c.time;
+                Us[celli] = overlapAverage(celli, c.velocityIntegral)/c.time;
                 continue;
             }
             const label I = node[celli];

@@ -110,7 +110,8 @@ void Foam::meshLattice::build(const dictionary& mpmDict)
     const dictionary& ld = optionalSubDict(mpmDict, "lattice");
     checkKeywords(ld, {"spacing"}, "lattice");
     vector h0(Zero);
-    const bool box = uniformBox(h0, ownReason_);
+    std::string notBox;
+    const bool box = uniformBox(h0, notBox);
     const Vector<label>& solD = mesh_.solutionD();
     scalar hBox = -1;
     for (direction d = 0; d < 3 && hBox < 0; ++d) if (solD[d] > 0) hBox = h0[d];
@@ -118,43 +119,43 @@ void Foam::meshLattice::build(const dictionary& mpmDict)
     {
         FatalErrorInFunction << "Mesh has no solved direction" << exit(FatalError);
     }
-    if (ld.found("spacing"))
-    {
-        const scalar h = readBounded(ld, "spacing", 0, numberRange{0, GREAT, false}, false);
-        if (box && mag(h - hBox) <= 1e-6*hBox)
-        {
-            buildFromCells(h0);
-            return;
-        }
-        if (box) ownReason_ = "lattice spacing " + Foam::name(h) + " differs from the cells' " + Foam::name(hBox);
-        cellsAreNodes_ = false;
-        buildOwn(h);
-        Info<< "MPM lattice: its own, spacing " << h << " (lattice spacing)"
-            << nl << "    (" << ownReason_.c_str() << ")" << nl;
-        return;
-    }
-    if (box)
+    const bool given = ld.found("spacing");
+    const scalar h =
+        given ? readBounded(ld, "spacing", 0, numberRange{0, GREAT, false}, false)
+      : meanCellSize();
+    if (box && (!given || mag(h - hBox) <= 1e-6*hBox))
     {
         buildFromCells(h0);
         return;
     }
-    // Default: the mesh's mean cell size in the solved directions, so that
-    // the lattice has about as many cells within the mesh as the mesh
+    const std::string why
+    (
+        box
+      ? "lattice spacing " + Foam::name(h) + " differs from the cells' " + Foam::name(hBox)
+      : "the mesh is not a uniform box: " + notBox
+    );
+    cellsAreNodes_ = false;
+    buildOwn(h);
+    Info<< "MPM lattice: its own, spacing " << h
+        << (given ? " (lattice spacing)" : " (default: the mesh's mean cell size;"
+            " set lattice { spacing ...; } in mpmProperties)") << nl
+        << "    (" << why.c_str() << ")" << nl;
+}
+
+Foam::scalar Foam::meshLattice::meanCellSize() const
+{
+    // The lattice then has about as many cells within the mesh as the mesh
     const scalar volume = returnReduce(sum(mesh_.cellVolumes()), sumOp<scalar>());
     const label nCells = returnReduce(mesh_.nCells(), sumOp<label>());
     const boundBox bb(mesh_.points(), true);
+    const Vector<label>& solD = mesh_.solutionD();
     scalar thickness = 1;
     label dim = 0;
     for (direction d = 0; d < 3; ++d)
     {
         if (solD[d] > 0) ++dim; else thickness *= bb.span()[d];
     }
-    const scalar h = std::pow(volume/thickness/nCells, 1.0/dim);
-    cellsAreNodes_ = false;
-    buildOwn(h);
-    Info<< "MPM lattice: its own, spacing " << h << " (default: the mesh's mean"
-        << " cell size; set lattice { spacing ...; } in mpmProperties)" << nl
-        << "    (the mesh is not a uniform box: " << ownReason_.c_str() << ")" << nl;
+    return std::pow(volume/thickness/nCells, 1.0/dim);
 }
 
 void Foam::meshLattice::buildOwn(scalar h)
