@@ -7,6 +7,7 @@
 #include "deviceStep.hpp"
 #include "deviceBuffer.cuh"
 #include "forEachOnDevice.cuh"
+#include "pointArrays.hpp"
 #include "../constitutive/lawKernels.hpp"
 #include "../kernels/g2p.hpp"
 #include "../kernels/movePoint.hpp"
@@ -184,29 +185,6 @@ int gridArrays(const GridView& g, unsigned what, Real* out[14])
     return c;
 }
 
-// The point arrays each way: read by the step (up) or written (down)
-enum PointDirection { pointsUp, pointsDown };
-
-template<class Fn>
-void pointArrays(const PointView& d, const PointView& h, PointDirection dir, bool apic, Fn&& fn)
-{
-    for (int a = 0; a < 3; ++a) { fn(d.x[a], h.x[a], "x"); fn(d.v[a], h.v[a], "v"); }
-    fn(d.volume, h.volume, "volume");
-    for (int e = 0; e < 9; ++e) fn(d.F[e], h.F[e], "F");
-    for (int c = 0; c < 6; ++c) fn(d.sigma[c], h.sigma[c], "sigma");
-    fn(d.eqPlasticStrain, h.eqPlasticStrain, "eqPlasticStrain");
-    if (apic) for (int e = 0; e < 9; ++e) fn(d.C[e], h.C[e], "C");
-    if (dir == pointsUp)
-    {
-        fn(d.mass, h.mass, "mass");
-        fn(d.volume0, h.volume0, "volume0");
-    }
-}
-
-// Reals per point in the device mirror: x v mass volume0 volume F sigma C
-// eqPlasticStrain L dx
-constexpr int realsPerPoint = 3 + 3 + 1 + 1 + 1 + 9 + 6 + 9 + 1 + 9 + 3;
-
 } // namespace
 
 struct DeviceStep::Impl
@@ -231,16 +209,7 @@ struct DeviceStep::Impl
     {
         points.resize(std::size_t(n)*realsPerPoint);
         material.resize(std::size_t(n));
-        Real* r = points.data();
-        auto take = [&]() { Real* a = r; r += n; return a; };
-        P = PointView();
-        P.n = n;
-        for (int a = 0; a < 3; ++a) { P.x[a] = take(); P.v[a] = take(); P.dx[a] = take(); }
-        P.mass = take(); P.volume0 = take(); P.volume = take();
-        for (int e = 0; e < 9; ++e) { P.F[e] = take(); P.C[e] = take(); P.L[e] = take(); }
-        for (int c = 0; c < 6; ++c) P.sigma[c] = take();
-        P.eqPlasticStrain = take();
-        P.material = material.data();
+        P = layPoints(points.data(), material.data(), n);
     }
 
     // Zeroes the two counters (stress: first bad, inverted; move: flagged)
@@ -276,7 +245,7 @@ void DeviceStep::uploadPoints(const PointView& host, bool apic)
     Impl& m = *impl_;
     m.setPoints(host.n);
     const std::size_t n = std::size_t(host.n);
-    pointArrays(m.P, host, pointsUp, apic, [&](Real* d, const Real* h, const char* name)
+    forEachPointArray(m.P, host, PointDirection::up, apic, [&](Real* d, const Real* h, const char* name)
     {
         if (n) cuda::cudaCheck(cudaMemcpy(d, h, n*sizeof(Real), cudaMemcpyHostToDevice),
                                (std::string("cudaMemcpy of the points' ") + name + " to the device").c_str());
@@ -289,7 +258,7 @@ void DeviceStep::downloadPoints(const PointView& host, bool apic)
     Impl& m = *impl_;
     if (host.n != m.P.n) throw std::runtime_error("DeviceStep::downloadPoints: the host holds another number of points");
     const std::size_t n = std::size_t(host.n);
-    pointArrays(m.P, host, pointsDown, apic, [&](const Real* d, Real* h, const char* name)
+    forEachPointArray(m.P, host, PointDirection::down, apic, [&](const Real* d, Real* h, const char* name)
     {
         if (n) cuda::cudaCheck(cudaMemcpy(h, d, n*sizeof(Real), cudaMemcpyDeviceToHost),
                                (std::string("cudaMemcpy of the points' ") + name + " to the host").c_str());
@@ -303,18 +272,9 @@ void DeviceStep::setActiveNodes(Index nNodes, const std::vector<Index>& active)
     {
         // A new lattice: the mirror starts at zero everywhere, and from
         // then on only active nodes are zeroed and written
-        m.grid.resize(std::size_t(nNodes)*14);
+        m.grid.resize(std::size_t(nNodes)*realsPerNode);
         m.grid.zero();
-        Real* r = m.grid.data();
-        auto take = [&]() { Real* a = r; r += nNodes; return a; };
-        m.g = GridView();
-        m.g.n = nNodes;
-        m.g.mass = take(); m.g.volume = take();
-        for (int d = 0; d < 3; ++d)
-        {
-            m.g.momentum[d] = take(); m.g.force[d] = take();
-            m.g.velocityOld[d] = take(); m.g.velocity[d] = take();
-        }
+        m.g = layGrid(m.grid.data(), nNodes);
     }
     m.active.upload(active.data(), active.size());
     m.activeHost = active;

@@ -24,6 +24,7 @@
 // Level-set walls are independent of the box's mirrored walls
 // (grid/boundary.hpp) and act together with them. docs/geometry.md.
 #pragma once
+#include "../common/hostDevice.hpp"
 #include "boundary.hpp"
 #include "lattice.hpp"
 #include <array>
@@ -123,7 +124,7 @@ struct LevelSetView
     Real band = 0;                      // beyond it phi is only a bound
     Real contact = 0;                   // nodes with phi below it are held
     const Real* velocity[3] = {};       // per wall: its velocity (moving)
-    explicit operator bool() const { return phi != nullptr; }
+    MPM_HOST_DEVICE explicit operator bool() const { return phi != nullptr; }
 };
 
 class LevelSetWalls

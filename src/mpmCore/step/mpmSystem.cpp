@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <type_traits>
@@ -46,6 +47,7 @@ void MpmSystem::setup
         boundary_.build(lattice_, spec);
     }
     options_ = options;
+    plan_ = makeStepPlan(options_);
     p2gRows_ = P2gRowChoice(options_.p2gRowLoop);
     removedCount_.assign(spec.conditions.size(), 0);
     removedMass_.assign(spec.conditions.size(), 0.0);
@@ -62,6 +64,17 @@ void MpmSystem::setup
 #ifdef MPM_HAVE_CUDA
     else if (!device_) device_ = std::make_shared<DeviceStep>();
 #endif
+    // The resident step, where the case allows it (residentUnsupported)
+    pullPoints();
+    resident_.reset();
+    if (options_.residentStandIn) resident_ = makeResidentStandIn();
+#ifdef MPM_HAVE_CUDA
+    else if (options_.backend == Backend::cuda) resident_ = makeResidentCuda();
+#endif
+    residentConfigured_ = false;
+    levelSetChanged_ = true;
+    hostAhead_ = true;
+    lastResident_ = false;
 }
 
 int MpmSystem::stencilReach(ShapeKind kind)
@@ -131,6 +144,7 @@ void MpmSystem::binPoints()
     {
         particles_.permute(binning_.order());
         binning_.setIdentityOrder();
+        hostAhead_ = true;
     }
     static const std::vector<Index> none;
     auto& g = grid_;
@@ -150,13 +164,19 @@ void MpmSystem::binPoints()
 
 void MpmSystem::step(Real dt)
 {
-    dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
-    migrate();
+    lastResident_ = resident_ && residentUnsupported().empty();
+    if (lastResident_) stepResident(dt);
+    else
+    {
+        pullPoints();
+        dispatch([&](auto k, auto d) { stepImpl<decltype(k), decltype(d)::value>(dt); });
+    }
     ++stepCount_;
 }
 
 void MpmSystem::mapToGrid()
 {
+    pullPoints();
     updateMassTolerance();
     dispatch([&](auto k, auto d)
     {
@@ -197,6 +217,7 @@ void MpmSystem::forEachPointStencil(Fn&& fn)
 
 void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
 {
+    pullPoints();
     out.assign(materials_.size(), std::vector<Real>(lattice_.nNodes, 0.0));
     const std::vector<Real> invRho0 = inverseDensities();
     const auto& P = particles_;
@@ -216,6 +237,7 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
 
 void MpmSystem::spreadGrainVolume(const std::vector<double>& coverage, std::vector<Real>& out)
 {
+    pullPoints();
     out.assign(std::size_t(lattice_.nNodes), 0.0);
     const std::vector<Real> invRho0 = inverseDensities();
     const auto& P = particles_;
@@ -242,51 +264,28 @@ void MpmSystem::stepImpl(Real dt)
     for (auto& a : L_) a.resize(n);
     for (auto& a : dx_) a.resize(n);
     updateMassTolerance();
-
-    const StressUpdate order = options_.stressUpdate;
+    const bool withForce = plan_.forceWithScatter;
+    // The host's phases, in the plan's order (step/stepPlan.hpp)
+    runPlan(plan_, timers_, [&](Phase phase)
     {
-        ScopedTimer t(timers_.p2g);
-        binPoints();
-        scatter<K, D>(true, order != StressUpdate::USF, false);
-    }
-    {
-        ScopedTimer t(timers_.nodal);
-        nodalAfterScatter<K, D>(dt, order != StressUpdate::USF);
-    }
-    if (order == StressUpdate::USF)
-    {
-        { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocityOld); }
-        { ScopedTimer t(timers_.constitutive); updateStress(dt); }
-        // The internal force, added to the gravity already there
-        { ScopedTimer t(timers_.p2g); scatter<K, D>(false, true, false); }
-        { ScopedTimer t(timers_.nodal); sumHalo(foldForce); foldGhosts(foldForce); }
-    }
-    {
-        ScopedTimer t(timers_.nodal);
-        nodalUpdate<K, D>(dt);
-    }
-    {
-        ScopedTimer t(timers_.g2p);
-        gather<K, D>(dt);
-    }
-    if (order == StressUpdate::MUSL)
-    {
+        switch (phase)
         {
-            ScopedTimer t(timers_.p2g);
-            scatter<K, D>(false, false, true);
+            case Phase::scatter: binPoints(); scatter<K, D>(true, withForce, false); break;
+            case Phase::nodalAfterScatter: nodalAfterScatter<K, D>(dt, withForce); break;
+            case Phase::gradientFromOld: gradientFromGrid<K, D>(grid_.velocityOld); break;
+            case Phase::stress: updateStress(dt); break;
+            // The internal force, added to the gravity already there
+            case Phase::scatterForce: scatter<K, D>(false, true, false); break;
+            case Phase::foldForce: sumHalo(foldForce); foldGhosts(foldForce); break;
+            case Phase::nodalUpdate: nodalUpdate<K, D>(dt); break;
+            case Phase::gather: gather<K, D>(dt); break;
+            case Phase::remapMomentum: scatter<K, D>(false, false, true); break;
+            case Phase::nodalAfterRemap: nodalAfterRemap<K, D>(); break;
+            case Phase::gradientFromNew: gradientFromGrid<K, D>(grid_.velocity); break;
+            case Phase::move: movePoints(dt); break;
+            case Phase::migrate: migrate(); break;
         }
-        { ScopedTimer t(timers_.nodal); nodalAfterRemap<K, D>(); }
-        { ScopedTimer t(timers_.g2p); gradientFromGrid<K, D>(grid_.velocity); }
-    }
-    if (order != StressUpdate::USF)
-    {
-        ScopedTimer t(timers_.constitutive);
-        updateStress(dt);
-    }
-    {
-        ScopedTimer t(timers_.g2p);
-        movePoints(dt);
-    }
+    }, recordPhases_);
 }
 
 // The node work after the step's fresh P2G (host and device steps alike):
@@ -737,6 +736,7 @@ void MpmSystem::setLevelSetWalls(std::vector<LevelSetWall> walls, const std::arr
     const Real contact = options_.shape == ShapeKind::linearHat ? 0.5*lattice_.h : 0.0;
     levelSet_.build(lattice_, std::move(walls), unsolved, contact);
     contained_ = 0;
+    levelSetChanged_ = true;
 }
 
 void MpmSystem::moveLevelSetWalls
@@ -746,6 +746,7 @@ void MpmSystem::moveLevelSetWalls
 )
 {
     levelSet_.move(lattice_, displacement, velocity);
+    levelSetChanged_ = true;
 }
 
 void MpmSystem::applyLevelSetWalls(std::array<std::vector<Real>, 3>& v)
@@ -995,8 +996,7 @@ void MpmSystem::stepOnDevice(Real dt)
     for (auto& a : L_) a.resize(n);
     for (auto& a : dx_) a.resize(n);
     updateMassTolerance();
-    const StressUpdate order = options_.stressUpdate;
-    const bool usf = order == StressUpdate::USF;
+    const bool withForce = plan_.forceWithScatter;
     const bool apic = options_.transfer == Transfer::apic;
     const bool grainVolume = options_.constantGrainVolume;
     const ShapeKind shape = options_.shape;
@@ -1004,72 +1004,56 @@ void MpmSystem::stepOnDevice(Real dt)
     const unsigned force = DeviceStep::gridForce;
     const std::vector<LawParams> laws = lawTable();
     const std::vector<Real> invRho0 = inverseDensities();
+    const GridView host = gridView(grid_);
+    // The host-assisted cuda phases, in the plan's order: point work on
+    // the device, node work here, the grid's active nodes copied between
+    runPlan(plan_, timers_, [&](Phase phase)
     {
-        ScopedTimer t(timers_.p2g);
-        binPoints();   // first: the points go up in block order
-        dev.setMaterials(laws);
-        dev.uploadPoints(pointView(particles_, L_, dx_), apic);
-        dev.setActiveNodes(lattice_.nNodes, region_.nodes());
-        dev.zeroGrid(massMomentum | force);
-        dev.p2g(lattice_, shape, true, !usf, apic, invRho0, grainVolume);
-        dev.gridToHost(gridView(grid_), massMomentum | (usf ? 0u : force));
-    }
-    {
-        ScopedTimer t(timers_.nodal);
-        nodalAfterScatter<K, D>(dt, !usf);
-    }
-    if (usf)
-    {
+        switch (phase)
         {
-            ScopedTimer t(timers_.g2p);
-            dev.gridFromHost(gridView(grid_), DeviceStep::gridVelocityOld);
-            dev.gradient(lattice_, shape, true);
+            case Phase::scatter:
+                binPoints();   // first: the points go up in block order
+                dev.setMaterials(laws);
+                dev.uploadPoints(pointView(particles_, L_, dx_), apic);
+                dev.setActiveNodes(lattice_.nNodes, region_.nodes());
+                dev.zeroGrid(massMomentum | force);
+                dev.p2g(lattice_, shape, true, withForce, apic, invRho0, grainVolume);
+                dev.gridToHost(host, massMomentum | (withForce ? force : 0u));
+                break;
+            case Phase::nodalAfterScatter: nodalAfterScatter<K, D>(dt, withForce); break;
+            case Phase::gradientFromOld:
+                dev.gridFromHost(host, DeviceStep::gridVelocityOld);
+                dev.gradient(lattice_, shape, true);
+                break;
+            case Phase::stress: stressOnDevice(dt); break;
+            case Phase::scatterForce:
+                // The internal force, added here to the gravity already there
+                dev.zeroGrid(force);
+                dev.p2g(lattice_, shape, false, true, apic, invRho0, grainVolume);
+                dev.gridToHost(host, force, true);
+                break;
+            case Phase::foldForce: sumHalo(foldForce); foldGhosts(foldForce); break;
+            case Phase::nodalUpdate: nodalUpdate<K, D>(dt); break;
+            case Phase::gather:
+                dev.gridFromHost(host, DeviceStep::gridVelocity | (apic ? 0u : unsigned(DeviceStep::gridVelocityOld)));
+                dev.g2p(lattice_, shape, apic, options_.flipRatio, dt);
+                dev.synchronise();
+                break;
+            case Phase::remapMomentum:
+                dev.zeroGrid(DeviceStep::gridMomentum);
+                dev.p2g(lattice_, shape, false, false, apic, invRho0, grainVolume);
+                dev.gridToHost(host, DeviceStep::gridMomentum);
+                break;
+            case Phase::nodalAfterRemap: nodalAfterRemap<K, D>(); break;
+            case Phase::gradientFromNew:
+                dev.gridFromHost(host, DeviceStep::gridVelocity);
+                dev.gradient(lattice_, shape, false);
+                dev.synchronise();
+                break;
+            case Phase::move: movePointsOnDevice(apic, dt); break;
+            case Phase::migrate: migrate(); break;
         }
-        { ScopedTimer t(timers_.constitutive); stressOnDevice(dt); }
-        {
-            // The internal force, added here to the gravity already there
-            ScopedTimer t(timers_.p2g);
-            dev.zeroGrid(force);
-            dev.p2g(lattice_, shape, false, true, apic, invRho0, grainVolume);
-            dev.gridToHost(gridView(grid_), force, true);
-        }
-        { ScopedTimer t(timers_.nodal); sumHalo(foldForce); foldGhosts(foldForce); }
-    }
-    {
-        ScopedTimer t(timers_.nodal);
-        nodalUpdate<K, D>(dt);
-    }
-    {
-        ScopedTimer t(timers_.g2p);
-        dev.gridFromHost(gridView(grid_), DeviceStep::gridVelocity | (apic ? 0u : unsigned(DeviceStep::gridVelocityOld)));
-        dev.g2p(lattice_, shape, apic, options_.flipRatio, dt);
-        dev.synchronise();
-    }
-    if (order == StressUpdate::MUSL)
-    {
-        {
-            ScopedTimer t(timers_.p2g);
-            dev.zeroGrid(DeviceStep::gridMomentum);
-            dev.p2g(lattice_, shape, false, false, apic, invRho0, grainVolume);
-            dev.gridToHost(gridView(grid_), DeviceStep::gridMomentum);
-        }
-        { ScopedTimer t(timers_.nodal); nodalAfterRemap<K, D>(); }
-        {
-            ScopedTimer t(timers_.g2p);
-            dev.gridFromHost(gridView(grid_), DeviceStep::gridVelocity);
-            dev.gradient(lattice_, shape, false);
-            dev.synchronise();
-        }
-    }
-    if (!usf)
-    {
-        ScopedTimer t(timers_.constitutive);
-        stressOnDevice(dt);
-    }
-    {
-        ScopedTimer t(timers_.g2p);
-        movePointsOnDevice(apic, dt);
-    }
+    }, recordPhases_);
 }
 
 // The stress update on the device; the inverted point of lowest id is
@@ -1117,10 +1101,123 @@ void MpmSystem::movePointsOnDevice(bool apic, Real dt)
 }
 #endif // MPM_HAVE_CUDA
 
+std::string MpmSystem::residentUnsupported() const
+{
+    if (!resident_) return "";
+    if (subdomain_) return "decomposed runs";
+    if (coupling_.active()) return "the fluid coupling";
+    if (options_.massMatrix != MassMatrix::lumped) return "consistent mass";
+    for (int a = 0; a < 3; ++a) if (boundary_.periodic(a)) return "periodic axes";
+    if (boundary_.hasOpenFaces() || !boundary_.inletNodes().empty()) return "open faces";
+    bool friction = !boundary_.frictionNodes().empty();
+    for (const auto& g : boundary_.ghosts()) friction = friction || g.mu > 0;
+    if (friction) return "Coulomb friction walls";
+    if (levelSet_.hasOutlets()) return "level-set outlets";
+    return "";
+}
+
+ResidentConfig MpmSystem::residentConfig() const
+{
+    ResidentConfig c;
+    c.lattice = lattice_;
+    c.shape = options_.shape;
+    c.plan = plan_;
+    c.apic = options_.transfer == Transfer::apic;
+    c.flipRatio = options_.flipRatio;
+    c.grainVolume = options_.constantGrainVolume;
+    c.frozen = options_.freezePositions;
+    c.gravity = options_.gravity;
+    c.laws = lawTable();
+    c.invRho0 = inverseDensities();
+    return c;
+}
+
+void MpmSystem::pullPoints() const
+{
+    if (!deviceAhead_) return;
+    // The host's points are a copy of the device's: refreshing it changes
+    // no state of the model
+    auto& self = const_cast<MpmSystem&>(*this);
+    resident_->downloadPoints(pointView(self.particles_, self.L_, self.dx_));
+    deviceAhead_ = false;
+}
+
+// The resident step (backend/residentStep.hpp): the plan's phases on the
+// device, the host told a few counters; the points come back only when the
+// host reads them (particles(), output) or a point went beyond a box wall.
+void MpmSystem::stepResident(Real dt)
+{
+    ResidentStep& r = *resident_;
+    const ResidentConfig c = residentConfig();
+    // Set after setup and changeable between steps: the laws' parameters,
+    // gravity, the grain volume
+    const bool changed = !residentConfigured_ || c.gravity != residentKey_.gravity
+        || c.grainVolume != residentKey_.grainVolume || c.invRho0 != residentKey_.invRho0
+        || c.laws.size() != residentKey_.laws.size()
+        || std::memcmp(c.laws.data(), residentKey_.laws.data(), c.laws.size()*sizeof(LawParams)) != 0;
+    if (changed)
+    {
+        ResidentConfig full = c;
+        full.ghosts = boundary_.ghosts();
+        r.configure(full);
+        residentKey_ = c;
+        residentConfigured_ = true;
+    }
+    if (levelSetChanged_)
+    {
+        r.setLevelSet(levelSet_.view(), lattice_.nNodes, Index(levelSet_.walls().size()));
+        levelSetChanged_ = false;
+    }
+    if (hostAhead_)
+    {
+        // Up in binning-block order, so that P2G's atomics of a warp's
+        // points mostly hit the same few nodes
+        if (options_.reorderPoints)
+        {
+            binning_.build(lattice_, particles_);
+            if (binning_.fragmented()) particles_.permute(binning_.order());
+        }
+        const Index n = particles_.size();
+        for (auto& a : L_) a.resize(n);
+        for (auto& a : dx_) a.resize(n);
+        updateMassTolerance();
+        r.uploadPoints(pointView(particles_, L_, dx_));
+        hostAhead_ = false;
+    }
+    const Index n = particles_.size();
+    const ResidentResult res = r.step(dt, massTolerance_, timers_, recordPhases_);
+    deviceAhead_ = true;
+    // The host step's stops, in its order
+    if (res.firstBadStress < n) { pullPoints(); stopIfNonFinite(res.firstBadStress, "stress or deformation"); }
+    inverted_ = InvertedPoints{};
+    inverted_.count = res.inverted;
+    if (res.inverted > 0) { pullPoints(); findFirstInverted(); }
+    if (res.firstBadMove < n) { pullPoints(); stopIfNonFinite(res.firstBadMove, "velocity"); }
+    contained_ += res.contained;
+    if (res.beyondWall == 0) return;
+    // Points beyond a box wall (a step far too large): held just inside,
+    // counted, as movePoints does, here on the host
+    pullPoints();
+    r.downloadMoveFlags(moveFlags_);
+    const PointView P = pointView(particles_, L_, dx_);
+    const bool periodic[3] = {false, false, false};
+    leaving_.assign(0, -1);
+    for (Index p = 0; p < n; ++p)
+    {
+        if (!(moveFlags_[p] & moveOutside)) continue;
+        const Real x[3] = {P.x[0][p], P.x[1][p], P.x[2][p]};
+        bool beyondWall = false;
+        exitCondition(x, beyondWall);
+        clamped_ += beyondWall;
+        storePosition(domain_, periodic, P, p, x);
+    }
+    containPoints(dt);
+    hostAhead_ = true;
+}
+
 Index MpmSystem::migrate()
 {
     if (!subdomain_) return 0;
-    ScopedTimer t(timers_.migration);
     const Subdomain& sd = *subdomain_;
     const Communicator& comm = sd.comm();
     const int me = comm.rank(), np = comm.size();
@@ -1184,6 +1281,7 @@ Index MpmSystem::migrate()
 
 Real MpmSystem::maxSignalSpeed() const
 {
+    pullPoints();
     const auto& P = particles_;
     const Index n = P.size();
     Real cmax = 0;
@@ -1212,6 +1310,7 @@ Real MpmSystem::stableDeltaT(Real courant) const
 
 Index MpmSystem::countOutside() const
 {
+    pullPoints();
     Index count = 0;
     for (Index p = 0; p < particles_.size(); ++p)
     {

@@ -1,7 +1,7 @@
 // One MPM model: lattice, boundary, materials, points and the explicit step.
 //
-//   step(dt):  bin -> P2G -> fold ghosts -> [USF stress] -> nodal update
-//              -> G2P (PIC/FLIP or APIC) -> [USL/MUSL stress] -> move points
+//   step(dt): the phases of its StepPlan (step/stepPlan.hpp), built once
+//             from the options and run by the back-end's launcher
 //
 // Every phase is a loop over points or nodes on flat arrays; P2G runs blocks
 // of one colour in parallel (see transfer/binning.hpp), G2P and the stress
@@ -11,6 +11,7 @@
 #pragma once
 #include "../constitutive/constitutiveLaw.hpp"
 #include "../backend/deviceStep.hpp"
+#include "../backend/residentStep.hpp"
 #include "../grid/activeRegion.hpp"
 #include "../grid/boundary.hpp"
 #include "../grid/gridState.hpp"
@@ -21,6 +22,7 @@
 #include "../particles/particles.hpp"
 #include "../transfer/binning.hpp"
 #include "stepOptions.hpp"
+#include "stepPlan.hpp"
 #include "stepTimers.hpp"
 #include <memory>
 #include <stdexcept>
@@ -131,8 +133,20 @@ public:
     // are within a fraction of a cell)
     Index levelSetContainedCount() const { return contained_; }
     const StepOptions& options() const { return options_; }
-    Particles& particles() { return particles_; }
-    const Particles& particles() const { return particles_; }
+    // The step's phases in order (step/stepPlan.hpp), built by setup
+    const StepPlan& plan() const { return plan_; }
+    // Tests: every phase a step runs appended to *out (null: none)
+    void recordPhases(std::vector<Phase>* out) { recordPhases_ = out; }
+    // The points. With the resident device step the host holds a copy,
+    // brought up to date here when the device is ahead; the non-const
+    // access counts as a change, uploaded before the next step.
+    Particles& particles() { pullPoints(); hostAhead_ = true; return particles_; }
+    const Particles& particles() const { pullPoints(); return particles_; }
+    // Why the resident device step does not run this case ("" when it
+    // does, or when the back-end has none: cuda or the stand-in only)
+    std::string residentUnsupported() const;
+    // Whether the last step ran resident on the device (or its stand-in)
+    bool lastStepResident() const { return lastResident_; }
     const GridState& grid() const { return grid_; }
     const StepTimers& timers() const { return timers_; }
     // The 3D non-APIC P2G's loop choice and its trial times (p2gRowChoice.hpp)
@@ -223,6 +237,11 @@ private:
     // The cuda back-end (backend/deviceStep.hpp): the step with the point
     // work on the device and the node work here, as in stepImpl
     template<class K, int D> void stepOnDevice(Real dt);
+    // The resident device step (backend/residentStep.hpp) and its host copy
+    void stepResident(Real dt);
+    ResidentConfig residentConfig() const;
+    // Brings the host's points up to date when the device is ahead
+    void pullPoints() const;
     void stressOnDevice(Real dt);
     void movePointsOnDevice(bool apic, Real dt);
     // The open condition through which a point beyond a face at x leaves,
@@ -306,6 +325,8 @@ private:
     LevelSetWalls levelSet_;
     Index contained_ = 0;
     StepOptions options_;
+    StepPlan plan_;
+    std::vector<Phase>* recordPhases_ = nullptr;
     Particles particles_;
     std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;
     GridState grid_;
@@ -328,6 +349,13 @@ private:
     // compiles the same with and without CUDA
     std::shared_ptr<DeviceStep> device_;
     std::vector<int> moveFlags_;
+    std::shared_ptr<ResidentStep> resident_;
+    ResidentConfig residentKey_;            // what resident_ was configured with
+    bool residentConfigured_ = false;
+    bool levelSetChanged_ = true;           // the level set to upload again
+    bool hostAhead_ = true;                 // host points changed since the upload
+    mutable bool deviceAhead_ = false;      // device points newer than the host's
+    bool lastResident_ = false;
 
     // Scratch per point: velocity gradient and displacement over the step.
     std::array<std::vector<Real>, 9> L_;

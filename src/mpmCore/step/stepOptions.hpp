@@ -67,6 +67,10 @@ struct StepOptions
     bool reorderPoints = true;
     // Who launches the kernel bodies (backend/backend.hpp)
     Backend backend = Backend::openmp;
+    // Tests: run the resident device step (backend/residentStep.hpp) on the
+    // host, with the stand-in for the CUDA runtime, where it covers the case
+    // (the host step otherwise). Not a back-end for runs.
+    bool residentStandIn = false;
     // 3D P2G without APIC: node rows as vector loops or node by node, by
     // timing unless forced (step/p2gRowChoice.hpp; no effect on results)
     P2gRowLoop p2gRowLoop = P2gRowLoop::automatic;

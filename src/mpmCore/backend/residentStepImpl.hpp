@@ -1,0 +1,538 @@
+// The resident step (interface and coverage: residentStep.hpp), written
+// once over an execution policy Exec that supplies:
+//
+//   Exec::Buffer<T>            resize, data, upload, download, zero
+//   Exec::copyToDevice(d, h, n), copyToHost(h, d, n), zero(d, n)
+//   Exec::forEach(n, body, s)  body(i) for i in [0, n), one thread each
+//   Exec::add(a, x)            *a += x, atomically where threads race
+//   Exec::min(a, x)            *a = min(*a, x) on a counter, atomically
+//   Exec::count(a)             ++*a on a counter, atomically
+//
+// The kernel bodies are the CPU step's (kernels/*.hpp); the node work that
+// the CPU step does over the boundary's node lists (MpmSystem's ghost
+// folds, contact, fills) is written here as bodies over the ghost list,
+// with Exec::add where ghosts share an image. The grid is dense: every
+// node, zeroed by one fill per step, so no active region is built. Phase
+// order: the plan's (step/stepPlan.hpp).
+#pragma once
+#include "pointArrays.hpp"
+#include "residentStep.hpp"
+#include "../kernels/g2p.hpp"
+#include "../kernels/levelSetWall.hpp"
+#include "../kernels/movePoint.hpp"
+#include "../kernels/nodal.hpp"
+#include "../kernels/p2g.hpp"
+#include "../kernels/stressPoint.hpp"
+#include <chrono>
+#include <cstring>
+#include <stdexcept>
+#include <type_traits>
+
+namespace mpm::resident {
+
+// The wall ghosts as arrays (Boundary::Ghost), and this step's reflection
+// signs (the contact decision releases a unilateral wall's normal sign)
+struct GhostView
+{
+    Index n = 0;
+    const Index* ghost = nullptr;
+    const Index* image = nullptr;
+    const Real* sign[3] = {};
+    const int* axis = nullptr;          // unilateral axis or -1
+    const Real* outward = nullptr;
+    Real* stepSign[3] = {};
+};
+
+// Counters: first bad (stress), first bad (move), inverted, beyond a wall,
+// contained
+enum Counter { firstBadStress, firstBadMove, invertedPoints, beyondWall, containedPoints, nCounters };
+
+template<class Exec>
+struct AddOf
+{
+    MPM_HOST_DEVICE void operator()(Real* a, Index I, Real x) const { Exec::add(a + I, x); }
+};
+
+template<class Exec, class K, int D, bool MassMomentum, bool Force, bool Apic>
+struct P2g
+{
+    Lattice L; PointView P; GridView g; const Real* invRho0; bool grainVolume;
+    MPM_HOST_DEVICE void operator()(Index p) const
+    {
+        p2gPoint<K, D, MassMomentum, Force, Apic>(L, P, g, invRho0, grainVolume, p, AddOf<Exec>{});
+    }
+};
+
+template<class K, int D, bool Apic>
+struct G2p
+{
+    Lattice L; PointView P; GridView g; Real flipRatio; Real dt;
+    MPM_HOST_DEVICE void operator()(Index p) const { g2pPoint<K, D, Apic>(L, P, g, flipRatio, dt, p); }
+};
+
+template<class K, int D>
+struct Gradient
+{
+    Lattice L; PointView P; Real* v[3];
+    MPM_HOST_DEVICE void operator()(Index p) const
+    {
+        const Real* const w[3] = {v[0], v[1], v[2]};
+        gradientPoint<K, D>(L, P, w, p);
+    }
+};
+
+template<class Exec>
+struct Stress
+{
+    PointView P; const LawParams* laws; Real dt; unsigned long long* c;
+    MPM_HOST_DEVICE void operator()(Index p) const
+    {
+        const StressPointStatus r = stressPoint(P, laws, dt, p);
+        if (r == StressPointStatus::bad) Exec::min(c + firstBadStress, (unsigned long long)p);
+        else if (r == StressPointStatus::inverted) Exec::count(c + invertedPoints);
+    }
+};
+
+// The advance; a point beyond a box face keeps its unclamped position and
+// its flag for the host (MpmSystem), then level-set containment
+template<class Exec>
+struct Move
+{
+    Lattice L; PointView P; bool frozen; LevelSetView ls; Real dt;
+    int* flags; unsigned long long* c;
+    MPM_HOST_DEVICE void operator()(Index p) const
+    {
+        const bool periodic[3] = {false, false, false};
+        Real x[3];
+        const int f = advancePoint(L, periodic, frozen, P, p, x);
+        flags[p] = f;
+        if (f & moveBad) { Exec::min(c + firstBadMove, (unsigned long long)p); return; }
+        if (frozen) return;
+        if (f & moveOutside)
+        {
+            Exec::count(c + beyondWall);
+            for (int a = 0; a < 3; ++a) P.x[a][p] = x[a];
+            return;
+        }
+        storePosition(L, periodic, P, p, x);
+        if (ls && levelSetContainPoint(L, ls, P, p, dt) == 1) Exec::count(c + containedPoints);
+    }
+};
+
+struct Gravity
+{
+    GridView g; Real gravity[3];
+    MPM_HOST_DEVICE void operator()(Index I) const { gravityNode(g, gravity, I); }
+};
+
+struct LumpedVelocity
+{
+    GridView g; Real* v[3]; Real tol;
+    MPM_HOST_DEVICE void operator()(Index I) const { lumpedVelocityNode(g, v, tol, I); }
+};
+
+// The uncoupled lumped update v = (p + dt f)/m (MpmSystem::nodalUpdate with
+// solveMass), then the level-set walls' condition
+struct NodalUpdate
+{
+    GridView g; Real dt; Real tol; LevelSetView ls;
+    MPM_HOST_DEVICE void operator()(Index I) const
+    {
+        const Real m = g.mass[I];
+        const Real inv = m > tol ? 1.0/m : 0.0;
+        for (int d = 0; d < 3; ++d) g.velocity[d][I] = (g.momentum[d][I] + dt*g.force[d][I])*inv;
+        if (ls) levelSetWallNode(ls, g.mass, g.velocity, tol, I);
+    }
+};
+
+struct LevelSetNode
+{
+    LevelSetView ls; const Real* mass; Real* v[3]; Real tol;
+    MPM_HOST_DEVICE void operator()(Index I) const { levelSetWallNode(ls, mass, v, tol, I); }
+};
+
+// Ghost folds (MpmSystem::foldScalar, foldVector): every ghost added into
+// its image (with this step's signs for vectors), then, for scalars, the
+// image's sum copied back to the ghost
+template<class Exec>
+struct FoldScalar
+{
+    GhostView G; Real* a;
+    MPM_HOST_DEVICE void operator()(Index k) const { Exec::add(a + G.image[k], a[G.ghost[k]]); }
+};
+
+struct CopyToGhost
+{
+    GhostView G; Real* a;
+    MPM_HOST_DEVICE void operator()(Index k) const { a[G.ghost[k]] = a[G.image[k]]; }
+};
+
+template<class Exec>
+struct FoldVector
+{
+    GhostView G; Real* a[3];
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        for (int d = 0; d < 3; ++d) Exec::add(a[d] + G.image[k], G.stepSign[d][k]*a[d][G.ghost[k]]);
+    }
+};
+
+struct FillGhosts
+{
+    GhostView G; Real* v[3];
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        for (int d = 0; d < 3; ++d) v[d][G.ghost[k]] = G.stepSign[d][k]*v[d][G.image[k]];
+    }
+};
+
+// The contact decision of unilateral walls (MpmSystem::decideWallContact),
+// in three launches: each image's own trial momentum, plus every ghost's,
+// then the signs
+struct ContactTrialImage
+{
+    GhostView G; GridView g; Real* trial[3]; Real dt; bool withForce; Real gravity[3];
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        for (int d = 0; d < 3; ++d) G.stepSign[d][k] = G.sign[d][k];
+        const int a = G.axis[k];
+        if (a < 0) return;
+        const Index I = G.image[k];
+        // Ghosts sharing an image write the same value
+        trial[a][I] = g.momentum[a][I] + (withForce ? dt*g.force[a][I] : dt*g.mass[I]*gravity[a]);
+    }
+};
+
+template<class Exec>
+struct ContactTrialGhost
+{
+    GhostView G; GridView g; Real* trial[3]; Real dt; bool withForce;
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        const int a = G.axis[k];
+        if (a < 0) return;
+        const Index J = G.ghost[k];
+        Exec::add(trial[a] + G.image[k], g.momentum[a][J] + (withForce ? dt*g.force[a][J] : 0.0));
+    }
+};
+
+struct ContactSign
+{
+    GhostView G; Real* trial[3];
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        const int a = G.axis[k];
+        if (a < 0) return;
+        if (!(trial[a][G.image[k]]*G.outward[k] >= 0)) G.stepSign[a][k] = 1.0;
+    }
+};
+
+template<class F>
+void pick(bool x, F&& f) { if (x) f(std::true_type{}); else f(std::false_type{}); }
+
+template<class Fn>
+void dispatchKD(ShapeKind shape, int dim, Fn&& f)
+{
+    dispatchShape(shape, [&](auto k)
+    {
+        switch (dim)
+        {
+            case 1: f(k, std::integral_constant<int, 1>{}); break;
+            case 2: f(k, std::integral_constant<int, 2>{}); break;
+            default: f(k, std::integral_constant<int, 3>{}); break;
+        }
+    });
+}
+
+template<class Exec>
+class Step final : public ResidentStep
+{
+    template<class T> using Buffer = typename Exec::template Buffer<T>;
+
+public:
+    void configure(const ResidentConfig& c) override
+    {
+        c_ = c;
+        laws_.upload(c.laws.data(), c.laws.size());
+        invRho0_.upload(c.invRho0.data(), c.invRho0.size());
+        const Index nNodes = c.lattice.nNodes;
+        if (g_.n != nNodes)
+        {
+            grid_.resize(std::size_t(nNodes)*realsPerNode);
+            g_ = layGrid(grid_.data(), nNodes);
+            trial_.resize(std::size_t(nNodes)*3);
+            trial_.zero();
+        }
+        // The ghosts, as arrays
+        const auto& gh = c.ghosts;
+        const Index n = Index(gh.size());
+        std::vector<Index> ghost(n), image(n);
+        std::vector<int> axis(n);
+        std::vector<Real> sign(3*std::size_t(n)), outward(n);
+        for (Index k = 0; k < n; ++k)
+        {
+            ghost[k] = gh[k].ghost; image[k] = gh[k].image;
+            axis[k] = gh[k].unilateralAxis; outward[k] = gh[k].outward;
+            for (int d = 0; d < 3; ++d) sign[d*std::size_t(n) + k] = gh[k].sign[d];
+        }
+        std::vector<Index> both(ghost);
+        both.insert(both.end(), image.begin(), image.end());
+        ghostIndex_.upload(both.data(), both.size());
+        ghostAxis_.upload(axis.data(), axis.size());
+        ghostReal_.resize(7*std::size_t(n));
+        std::vector<Real> reals(sign);
+        reals.insert(reals.end(), outward.begin(), outward.end());
+        reals.resize(7*std::size_t(n), 0.0);
+        if (n) ghostReal_.upload(reals.data(), reals.size());
+        G_ = GhostView();
+        G_.n = n;
+        G_.ghost = ghostIndex_.data();
+        G_.image = ghostIndex_.data() + n;
+        for (int d = 0; d < 3; ++d)
+        {
+            G_.sign[d] = ghostReal_.data() + d*n;
+            G_.stepSign[d] = ghostReal_.data() + (4 + d)*n;
+        }
+        G_.outward = ghostReal_.data() + 3*n;
+        G_.axis = ghostAxis_.data();
+    }
+
+    void setLevelSet(const LevelSetView& h, Index nNodes, Index nWalls) override
+    {
+        ls_ = LevelSetView();
+        if (!h) return;
+        lsReal_.resize(std::size_t(nNodes)*4 + std::size_t(nWalls)*4);
+        std::vector<Real> r;
+        r.reserve(lsReal_.size());
+        r.insert(r.end(), h.phi, h.phi + nNodes);
+        for (int a = 0; a < 3; ++a) r.insert(r.end(), h.normal[a], h.normal[a] + nNodes);
+        r.insert(r.end(), h.mu, h.mu + nWalls);
+        for (int a = 0; a < 3; ++a) r.insert(r.end(), h.velocity[a], h.velocity[a] + nWalls);
+        lsReal_.upload(r.data(), r.size());
+        std::vector<int> i(h.wall, h.wall + nNodes);
+        i.insert(i.end(), h.type, h.type + nWalls);
+        lsInt_.upload(i.data(), i.size());
+        const Real* d = lsReal_.data();
+        ls_.phi = d;
+        for (int a = 0; a < 3; ++a) ls_.normal[a] = d + (1 + a)*nNodes;
+        ls_.mu = d + 4*nNodes;
+        for (int a = 0; a < 3; ++a) ls_.velocity[a] = d + 4*nNodes + (1 + a)*nWalls;
+        ls_.wall = lsInt_.data();
+        ls_.type = lsInt_.data() + nNodes;
+        ls_.band = h.band;
+        ls_.contact = h.contact;
+    }
+
+    void uploadPoints(const PointView& host) override
+    {
+        const Index n = host.n;
+        points_.resize(std::size_t(n)*realsPerPoint);
+        material_.resize(std::size_t(n));
+        P_ = layPoints(points_.data(), material_.data(), n);
+        forEachPointArray(P_, host, PointDirection::up, c_.apic, [&](Real* d, const Real* h, const char*)
+        {
+            Exec::copyToDevice(d, h, std::size_t(n));
+        });
+        if (n) Exec::copyToDevice(material_.data(), host.material, std::size_t(n));
+        flags_.resize(std::size_t(n));
+    }
+
+    void downloadPoints(const PointView& host) override
+    {
+        if (host.n != P_.n) throw std::runtime_error("the resident step holds another number of points than the host");
+        forEachPointArray(P_, host, PointDirection::down, c_.apic, [&](const Real* d, Real* h, const char*)
+        {
+            Exec::copyToHost(h, d, std::size_t(P_.n));
+        });
+    }
+
+    void downloadMoveFlags(std::vector<int>& flags) override
+    {
+        flags.resize(std::size_t(P_.n));
+        flags_.download(flags.data(), flags.size());
+    }
+
+    void downloadGrid(std::vector<Real>& mass, std::array<std::vector<Real>, 3>& velocity) override
+    {
+        const std::size_t n = std::size_t(g_.n);
+        mass.resize(n);
+        Exec::copyToHost(mass.data(), g_.mass, n);
+        for (int d = 0; d < 3; ++d)
+        {
+            velocity[d].resize(n);
+            Exec::copyToHost(velocity[d].data(), g_.velocity[d], n);
+        }
+    }
+
+    ResidentResult step(Real dt, Real tol, StepTimers& timers, std::vector<Phase>* record) override
+    {
+        const Index n = P_.n;
+        const unsigned long long init[nCounters] = {(unsigned long long)n, (unsigned long long)n, 0, 0, 0};
+        counters_.upload(init, nCounters);
+        dispatchKD(c_.shape, c_.lattice.dim, [&](auto k, auto d)
+        {
+            using K = decltype(k);
+            constexpr int D = decltype(d)::value;
+            runPlan(c_.plan, timers, [&](Phase phase) { run<K, D>(phase, dt, tol); }, record);
+        });
+        unsigned long long c[nCounters];
+        counters_.download(c, nCounters);   // waits for the step
+        return {Index(c[firstBadStress]), Index(c[firstBadMove]), Index(c[invertedPoints]),
+                Index(c[beyondWall]), Index(c[containedPoints])};
+    }
+
+private:
+    template<class K, int D>
+    void run(Phase phase, Real dt, Real tol)
+    {
+        const bool withForce = c_.plan.forceWithScatter;
+        switch (phase)
+        {
+            case Phase::scatter:
+                grid_.zero();
+                scatter<K, D>(true, withForce);
+                break;
+            case Phase::nodalAfterScatter:
+            {
+                // MpmSystem::nodalAfterScatter without halo (one rank)
+                Gravity gr{g_, {c_.gravity[0], c_.gravity[1], c_.gravity[2]}};
+                Exec::forEach(g_.n, gr, "the gravity kernel");
+                foldScalar(g_.mass);
+                foldScalar(g_.volume);
+                contact(dt, withForce);
+                foldVector(g_.momentum);
+                if (withForce) foldVector(g_.force);
+                LumpedVelocity lv{g_, {g_.velocityOld[0], g_.velocityOld[1], g_.velocityOld[2]}, tol};
+                Exec::forEach(g_.n, lv, "the nodal velocity kernel");
+                fillGhosts(g_.velocityOld);
+                break;
+            }
+            case Phase::gradientFromOld: gradient<K, D>(g_.velocityOld); break;
+            case Phase::stress:
+            {
+                Stress<Exec> s{P_, laws_.data(), dt, counters_.data()};
+                Exec::forEach(P_.n, s, "the stress update kernel");
+                break;
+            }
+            case Phase::scatterForce:
+            {
+                // The internal force alone, added to the gravity there
+                scatter<K, D>(false, true);
+                break;
+            }
+            case Phase::foldForce: foldVector(g_.force); break;
+            case Phase::nodalUpdate:
+            {
+                NodalUpdate u{g_, dt, tol, ls_};
+                Exec::forEach(g_.n, u, "the nodal update kernel");
+                fillGhosts(g_.velocity);
+                break;
+            }
+            case Phase::gather:
+                pick(c_.apic, [&](auto a)
+                {
+                    G2p<K, D, decltype(a)::value> body{c_.lattice, P_, g_, c_.flipRatio, dt};
+                    Exec::forEach(P_.n, body, "the G2P kernel");
+                });
+                break;
+            case Phase::remapMomentum:
+                for (int d = 0; d < 3; ++d) Exec::zero(g_.momentum[d], std::size_t(g_.n));
+                scatter<K, D>(false, false);
+                break;
+            case Phase::nodalAfterRemap:
+            {
+                foldVector(g_.momentum);
+                LumpedVelocity lv{g_, {g_.velocity[0], g_.velocity[1], g_.velocity[2]}, tol};
+                Exec::forEach(g_.n, lv, "the nodal velocity kernel");
+                if (ls_)
+                {
+                    LevelSetNode w{ls_, g_.mass, {g_.velocity[0], g_.velocity[1], g_.velocity[2]}, tol};
+                    Exec::forEach(g_.n, w, "the level-set wall kernel");
+                }
+                fillGhosts(g_.velocity);
+                break;
+            }
+            case Phase::gradientFromNew: gradient<K, D>(g_.velocity); break;
+            case Phase::move:
+            {
+                Move<Exec> m{c_.lattice, P_, c_.frozen, ls_, dt, flags_.data(), counters_.data()};
+                Exec::forEach(P_.n, m, "the point advance kernel");
+                break;
+            }
+            case Phase::migrate: break;   // one rank
+        }
+    }
+
+    template<class K, int D>
+    void scatter(bool massMomentum, bool force)
+    {
+        pick(massMomentum, [&](auto mm)
+        {
+            pick(force, [&](auto f)
+            {
+                pick(c_.apic, [&](auto a)
+                {
+                    P2g<Exec, K, D, decltype(mm)::value, decltype(f)::value, decltype(a)::value> body
+                    {c_.lattice, P_, g_, invRho0_.data(), c_.grainVolume};
+                    Exec::forEach(P_.n, body, "the P2G kernel");
+                });
+            });
+        });
+    }
+
+    template<class K, int D>
+    void gradient(Real* const v[3])
+    {
+        Gradient<K, D> body{c_.lattice, P_, {v[0], v[1], v[2]}};
+        Exec::forEach(P_.n, body, "the velocity gradient kernel");
+    }
+
+    void foldScalar(Real* a)
+    {
+        Exec::forEach(G_.n, FoldScalar<Exec>{G_, a}, "the ghost fold kernel");
+        Exec::forEach(G_.n, CopyToGhost{G_, a}, "the ghost copy kernel");
+    }
+
+    void foldVector(Real* const a[3])
+    {
+        Exec::forEach(G_.n, FoldVector<Exec>{G_, {a[0], a[1], a[2]}}, "the ghost fold kernel");
+    }
+
+    void fillGhosts(Real* const v[3])
+    {
+        Exec::forEach(G_.n, FillGhosts{G_, {v[0], v[1], v[2]}}, "the ghost fill kernel");
+    }
+
+    void contact(Real dt, bool withForce)
+    {
+        Real* trial[3];
+        for (int d = 0; d < 3; ++d) trial[d] = trial_.data() + d*g_.n;
+        ContactTrialImage a{G_, g_, {trial[0], trial[1], trial[2]}, dt, withForce,
+                            {c_.gravity[0], c_.gravity[1], c_.gravity[2]}};
+        Exec::forEach(G_.n, a, "the wall contact kernel");
+        Exec::forEach(G_.n, ContactTrialGhost<Exec>{G_, g_, {trial[0], trial[1], trial[2]}, dt, withForce},
+                      "the wall contact kernel");
+        Exec::forEach(G_.n, ContactSign{G_, {trial[0], trial[1], trial[2]}}, "the wall contact kernel");
+    }
+
+    ResidentConfig c_;
+    Buffer<LawParams> laws_;
+    Buffer<Real> invRho0_;
+    Buffer<Real> points_;
+    Buffer<int> material_;
+    Buffer<int> flags_;
+    PointView P_;
+    Buffer<Real> grid_;
+    Buffer<Real> trial_;
+    GridView g_;
+    Buffer<Index> ghostIndex_;
+    Buffer<int> ghostAxis_;
+    Buffer<Real> ghostReal_;
+    GhostView G_;
+    Buffer<Real> lsReal_;
+    Buffer<int> lsInt_;
+    LevelSetView ls_;
+    Buffer<unsigned long long> counters_;
+};
+
+} // namespace mpm::resident
