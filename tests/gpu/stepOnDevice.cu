@@ -1,11 +1,16 @@
-// GPU test: the cuda back-end of the step (backend/deviceStep.hpp) agrees
-// with the CPU back-end (serial) on short runs.
+// GPU test: the cuda back-end of the step agrees with the CPU back-end
+// (serial) on short runs, in both its forms: the resident step
+// (backend/residentStep.hpp) and the host-assisted one
+// (backend/deviceStep.hpp), each case checking that the form it expects ran.
 //
 //  * a 3D linear-elastic block thrown at the floor of a no-slip box under
 //    gravity, for every shape function (LH, QBS, CBS), transfer (FLIP 0.99,
 //    APIC) and stress update (USF, USL, MUSL);
+//    each resident and host-assisted;
+//  * the block in a slip box and on a slip level-set sphere (resident), and
+//    with consistent mass, periodic axes and an outlet (host-assisted);
 //  * a Drucker-Prager granular column collapsing in a box of slip walls
-//    with a Coulomb-friction floor (QBS and CBS, FLIP, USL).
+//    with a Coulomb-friction floor (QBS and CBS, FLIP, USL; host-assisted).
 //
 // 20 steps each; per point (matched by id) the displacement, the velocity
 // and the stress of the two runs must agree to 1e-9 relative to the
@@ -45,6 +50,8 @@ struct Case
     StepOptions options;
     BoundarySpec boundary;
     bool granular = false;
+    bool obstacle = false;       // a slip level-set sphere in the block's path
+    bool resident = true;        // expected to run the resident step
 };
 
 // Seeds 2x2x2 points per cell in cells [lo, hi) of each axis
@@ -84,6 +91,11 @@ void build(MpmSystem& s, const Case& c, Backend backend)
         s.materials().push_back(makeLaw("linearElastic", {{"rho", 1000}, {"E", 1e5}, {"nu", 0.3}}));
         // a block one cell above the floor, thrown down and sideways
         seedBox(s, {3, 2, 1}, {9, 8, 7}, {0.8, 0.3, -1.5}, 1000);
+    }
+    if (c.obstacle)
+    {
+        s.setLevelSetWalls({{"ball", std::make_shared<SphereShape>(std::array<Real, 3>{1.0, 0.5, 0.15}, 0.12),
+                             WallCondition{WallType::slip, 0, {0, 0, 0}}}}, {0, 0, 0});
     }
 }
 
@@ -152,10 +164,14 @@ bool run(const Case& c)
     // The run must have done something for the comparison to mean anything
     Real moved = 0;
     for (const auto& [id, d] : a.displacement) moved = std::max(moved, std::abs(d[2]));
-    const bool ok = dx <= tolerance && dv <= tolerance && ds <= tolerance && moved > 1e-3;
-    std::printf("%s %-34s %6lld points, dt %.3e: relative difference x %.2e v %.2e sigma %.2e"
-                " (max |dz| %.3f m)\n", ok ? "PASS" : "FAIL", c.name.c_str(),
-                (long long)cpu.particles().size(), dt, dx, dv, ds, moved);
+    // The device step that ran is the one the case expects
+    const bool path = gpu.lastStepResident() == c.resident;
+    const bool ok = dx <= tolerance && dv <= tolerance && ds <= tolerance && moved > 1e-3 && path;
+    const std::string why = gpu.residentUnsupported();
+    std::printf("%s %-46s %-9s %6lld points, dt %.3e: relative difference x %.2e v %.2e sigma %.2e"
+                " (max |dz| %.3f m)%s%s\n", ok ? "PASS" : "FAIL", c.name.c_str(),
+                gpu.lastStepResident() ? "resident" : "host", (long long)cpu.particles().size(), dt,
+                dx, dv, ds, moved, why.empty() ? "" : ", host-assisted: ", why.c_str());
     return ok;
 }
 
@@ -173,13 +189,43 @@ int main()
     for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
     for (auto transfer : {Transfer::picFlip, Transfer::apic})
     for (auto update : {StressUpdate::USF, StressUpdate::USL, StressUpdate::MUSL})
+    for (bool resident : {true, false})
     {
         Case c;
         c.options.shape = shape;
         c.options.transfer = transfer;
         c.options.stressUpdate = update;
+        c.options.deviceResident = resident;
+        c.resident = resident;
         c.name = std::string("elastic block ") + shapeName(shape) + " " + transferName(transfer)
             + " " + stressUpdateName(update);
+        cases.push_back(c);
+    }
+    // The resident step's walls, and what it leaves to the host-assisted one
+    for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
+    {
+        Case c;
+        c.options.shape = shape;
+        const std::string s = shapeName(shape);
+        c.boundary.conditions = {WallCondition{WallType::slip, 0, {0, 0, 0}}};
+        c.name = "elastic block in a slip box " + s;
+        cases.push_back(c);
+        c.boundary = BoundarySpec();
+        c.obstacle = true;
+        c.name = "elastic block on a level-set sphere " + s;
+        cases.push_back(c);
+        c.obstacle = false;
+        c.resident = false;
+        c.options.massMatrix = MassMatrix::consistent;
+        c.name = "elastic block, consistent mass " + s;
+        cases.push_back(c);
+        c.options.massMatrix = MassMatrix::lumped;
+        c.boundary.conditions = {WallCondition{WallType::periodic, 0, {0, 0, 0}}};
+        c.name = "elastic block, periodic " + s;
+        cases.push_back(c);
+        c.boundary.conditions = {WallCondition{}, WallCondition{WallType::outlet, 0, {0, 0, 0}}};
+        c.boundary.faceCondition[1].assign(10*12, 1);   // x+: 10 x 12 faces
+        c.name = "elastic block, outlet on x+ " + s;
         cases.push_back(c);
     }
     for (auto shape : {ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
@@ -195,6 +241,7 @@ int main()
         L.nCells = {12, 10, 12};
         c.boundary.faceCondition[4].assign(std::size_t(L.nCells[0])*L.nCells[1], 1);
         c.name = std::string("granular column ") + shapeName(shape);
+        c.resident = false;   // Coulomb friction walls: host-assisted
         cases.push_back(c);
     }
     int failures = 0;

@@ -50,4 +50,51 @@ std::string cudaUnavailableReason()
     return answer;
 }
 
+namespace {
+
+__global__ void triadKernel(double* a, const double* b, const double* c, double s, long n)
+{
+    const long i = long(blockIdx.x)*blockDim.x + threadIdx.x;
+    if (i < n) a[i] = b[i] + s*c[i];
+}
+
+} // namespace
+
+std::string cudaDeviceDescription()
+{
+    cudaDeviceProp prop;
+    if (cudaGetDeviceProperties(&prop, 0) != cudaSuccess) return "unknown device";
+    return std::string(prop.name) + " (compute capability " + std::to_string(prop.major) + "."
+        + std::to_string(prop.minor) + ", " + std::to_string(prop.multiProcessorCount) + " SMs, "
+        + std::to_string(prop.totalGlobalMem >> 30) + " GiB)";
+}
+
+// STREAM's triad counting: 3 arrays of 8-byte values per element (no
+// write-allocate), the best of 10 launches over 2^26 elements
+double cudaTriadBandwidth()
+{
+    const long n = 1l << 26;
+    double* d = nullptr;
+    if (cudaMalloc(&d, 3*n*sizeof(double)) != cudaSuccess) return 0;
+    cudaMemset(d, 0, 3*n*sizeof(double));
+    cudaEvent_t t0, t1;
+    cudaEventCreate(&t0);
+    cudaEventCreate(&t1);
+    float best = 1e30f;
+    for (int r = 0; r < 10; ++r)
+    {
+        cudaEventRecord(t0);
+        triadKernel<<<unsigned((n + 255)/256), 256>>>(d, d + n, d + 2*n, 1.5, n);
+        cudaEventRecord(t1);
+        cudaEventSynchronize(t1);
+        float ms = 0;
+        cudaEventElapsedTime(&ms, t0, t1);
+        best = ms < best ? ms : best;
+    }
+    cudaEventDestroy(t0);
+    cudaEventDestroy(t1);
+    cudaFree(d);
+    return 3.0*n*sizeof(double)/(1e-3*best)/1e9;
+}
+
 } // namespace mpm

@@ -50,6 +50,10 @@ struct LawParams;
 // CUDA builds: "" when a usable GPU is present, otherwise why not (no
 // device; driver missing or too old; an architecture the build lacks).
 std::string cudaUnavailableReason();
+// CUDA builds with a GPU: its name and size, and its measured memory
+// bandwidth in GB/s (a triad, as STREAM counts it; benchmarks)
+std::string cudaDeviceDescription();
+double cudaTriadBandwidth();
 
 class DeviceStep
 {

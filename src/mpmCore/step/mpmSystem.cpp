@@ -69,7 +69,7 @@ void MpmSystem::setup
     resident_.reset();
     if (options_.residentStandIn) resident_ = makeResidentStandIn();
 #ifdef MPM_HAVE_CUDA
-    else if (options_.backend == Backend::cuda) resident_ = makeResidentCuda();
+    else if (options_.backend == Backend::cuda && options_.deviceResident) resident_ = makeResidentCuda();
 #endif
     residentConfigured_ = false;
     levelSetChanged_ = true;

@@ -67,6 +67,10 @@ struct StepOptions
     bool reorderPoints = true;
     // Who launches the kernel bodies (backend/backend.hpp)
     Backend backend = Backend::openmp;
+    // cuda: keep the points and the grid on the device between steps where
+    // the case allows it (backend/residentStep.hpp); false: the
+    // host-assisted step always (comparisons)
+    bool deviceResident = true;
     // Tests: run the resident device step (backend/residentStep.hpp) on the
     // host, with the stand-in for the CUDA runtime, where it covers the case
     // (the host step otherwise). Not a back-end for runs.
