@@ -10,8 +10,9 @@
 namespace mpm::bench {
 
 // resident: with the cuda back-end, the resident step (false: host-assisted)
+// and its P2G reduction (StepOptions::p2gWarpReduction)
 inline MpmSystem makeBlock(ShapeKind shape, int n, bool reorder, bool shuffle, Backend backend = Backend::openmp,
-                           bool resident = true)
+                           bool resident = true, bool warpReduction = true)
 {
     // The block is n^3 cells; the lattice adds 4 empty cells on each side.
     const int m = n + 8;
@@ -25,6 +26,7 @@ inline MpmSystem makeBlock(ShapeKind shape, int n, bool reorder, bool shuffle, B
     o.reorderPoints = reorder;
     o.backend = backend;
     o.deviceResident = resident;
+    o.p2gWarpReduction = warpReduction;
     MpmSystem s;
     s.setup(L, b, o);
     s.materials().push_back(makeLaw("linearElastic", {{"rho", 1000}, {"E", 1e6}, {"nu", 0.3}}));

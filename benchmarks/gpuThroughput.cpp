@@ -5,7 +5,10 @@
 //   openmp     every host core
 //   cuda-host  the host-assisted cuda step (backend/deviceStep.hpp: points
 //              up and down every step, node work on the host)
-//   cuda       the resident cuda step (backend/residentStep.hpp)
+//   cuda-atom  the resident cuda step (backend/residentStep.hpp), P2G with
+//              one atomic per point and node
+//   cuda       the resident cuda step, P2G atomics pre-reduced over the
+//              warp's points of one stencil (the default)
 // with the ratios to one thread and to every core, and for the cuda rows
 // the achieved memory traffic (stepCost.hpp's model of bytes per
 // point-step, the grid counted once per node) as a fraction of the card's
@@ -47,26 +50,28 @@ int main(int argc, char** argv)
     for (auto shape : {ShapeKind::linearHat, ShapeKind::quadraticBSpline, ShapeKind::cubicBSpline})
     {
         double one = 0, all = 0;
-        for (int row = 0; row < 4; ++row)
+        for (int row = 0; row < 5; ++row)
         {
             if (row >= 2 && !noGpu.empty()) break;
             const Backend b = row == 0 ? Backend::serial : row == 1 ? Backend::openmp : Backend::cuda;
             omp_set_num_threads(row == 1 ? cores : 1);
-            MpmSystem s = bench::makeBlock(shape, n, true, false, b, row == 3);
+            MpmSystem s = bench::makeBlock(shape, n, true, false, b, row >= 3, row == 4);
             const bench::TimedSteps r = bench::timeSteps(s, s.stableDeltaT(0.5), P2gRowChoice::tuningSteps, steps);
             const Index points = s.particles().size();
             const double rate = points*double(steps)/r.seconds;
             if (row == 0) one = rate;
             if (row == 1) all = rate;
-            const char* name = row == 0 ? "serial" : row == 1 ? "openmp" : row == 2 ? "cuda-host" : "cuda";
-            if (row == 3 && !s.lastStepResident())
+            const char* const names[] = {"serial", "openmp", "cuda-host", "cuda-atom", "cuda"};
+            const char* name = names[row];
+            if (row >= 3 && !s.lastStepResident())
             {
                 std::printf("# the resident step did not run: %s\n", s.residentUnsupported().c_str());
             }
-            std::printf("%-18s %10s %8d %10lld %10.2f %14.1f %9.2f %9.2f", shapeName(shape), name,
-                        row == 1 ? cores : 1, (long long)points, 1e3*r.seconds/steps, rate/1e6,
-                        rate/one, all > 0 ? rate/all : 0.0);
-            if (row == 3)
+            std::printf("%-18s %10s %8d %10lld %10.2f %14.1f %9.2f", shapeName(shape), name,
+                        row == 1 ? cores : 1, (long long)points, 1e3*r.seconds/steps, rate/1e6, rate/one);
+            if (all > 0) std::printf(" %9.2f", rate/all);
+            else std::printf(" %9s", "-");
+            if (row >= 3)
             {
                 // Resident: the dense grid's every node is touched each step
                 const bench::StepCost cost = bench::stepCost(shape, points, s.lattice().nNodes);

@@ -39,6 +39,8 @@ struct HostExec
     static void forEach(Index n, const Body& body, const char*) { for (Index i = 0; i < n; ++i) body(i); }
 
     static void add(Real* a, Real x) { *a += x; }
+    // One thread: no warp to reduce over
+    template<bool Warp> using P2gAdd = PlainAdd;
     static void min(unsigned long long* a, unsigned long long x) { *a = std::min(*a, x); }
     static void count(unsigned long long* a) { ++*a; }
 };

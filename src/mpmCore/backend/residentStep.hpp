@@ -47,6 +47,7 @@ struct ResidentConfig
     Real flipRatio = 0.99;
     bool grainVolume = false;
     bool frozen = false;
+    bool p2gWarpReduction = true;        // StepOptions::p2gWarpReduction
     std::array<Real, 3> gravity{0, 0, 0};
     std::vector<Boundary::Ghost> ghosts;
     std::vector<LawParams> laws;

@@ -5,6 +5,8 @@
 //   Exec::copyToDevice(d, h, n), copyToHost(h, d, n), zero(d, n)
 //   Exec::forEach(n, body, s)  body(i) for i in [0, n), one thread each
 //   Exec::add(a, x)            *a += x, atomically where threads race
+//   Exec::P2gAdd<Warp>         P2G's add (kernels/p2g.hpp), the atomics
+//                              pre-reduced over a warp's points or not
 //   Exec::min(a, x)            *a = min(*a, x) on a counter, atomically
 //   Exec::count(a)             ++*a on a counter, atomically
 //
@@ -47,19 +49,14 @@ struct GhostView
 // contained
 enum Counter { firstBadStress, firstBadMove, invertedPoints, beyondWall, containedPoints, nCounters };
 
-template<class Exec>
-struct AddOf
-{
-    MPM_HOST_DEVICE void operator()(Real* a, Index I, Real x) const { Exec::add(a + I, x); }
-};
-
-template<class Exec, class K, int D, bool MassMomentum, bool Force, bool Apic>
+template<class Exec, class K, int D, bool MassMomentum, bool Force, bool Apic, bool Warp>
 struct P2g
 {
     Lattice L; PointView P; GridView g; const Real* invRho0; bool grainVolume;
     MPM_HOST_DEVICE void operator()(Index p) const
     {
-        p2gPoint<K, D, MassMomentum, Force, Apic>(L, P, g, invRho0, grainVolume, p, AddOf<Exec>{});
+        using Add = typename Exec::template P2gAdd<Warp>;
+        p2gPoint<K, D, MassMomentum, Force, Apic>(L, P, g, invRho0, grainVolume, p, Add{});
     }
 };
 
@@ -472,9 +469,12 @@ private:
             {
                 pick(c_.apic, [&](auto a)
                 {
-                    P2g<Exec, K, D, decltype(mm)::value, decltype(f)::value, decltype(a)::value> body
-                    {c_.lattice, P_, g_, invRho0_.data(), c_.grainVolume};
-                    Exec::forEach(P_.n, body, "the P2G kernel");
+                    pick(c_.p2gWarpReduction, [&](auto w)
+                    {
+                        P2g<Exec, K, D, decltype(mm)::value, decltype(f)::value, decltype(a)::value,
+                            decltype(w)::value> body{c_.lattice, P_, g_, invRho0_.data(), c_.grainVolume};
+                        Exec::forEach(P_.n, body, "the P2G kernel");
+                    });
                 });
             });
         });

@@ -1126,6 +1126,7 @@ ResidentConfig MpmSystem::residentConfig() const
     c.flipRatio = options_.flipRatio;
     c.grainVolume = options_.constantGrainVolume;
     c.frozen = options_.freezePositions;
+    c.p2gWarpReduction = options_.p2gWarpReduction;
     c.gravity = options_.gravity;
     c.laws = lawTable();
     c.invRho0 = inverseDensities();

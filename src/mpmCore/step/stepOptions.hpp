@@ -71,6 +71,11 @@ struct StepOptions
     // the case allows it (backend/residentStep.hpp); false: the
     // host-assisted step always (comparisons)
     bool deviceResident = true;
+    // The resident cuda step's P2G: the sums of a warp's points that share
+    // a stencil added together (shuffles) before one atomic per node, or
+    // one atomic per point and node (backend/residentCuda.cu; the choice
+    // measured by benchmarks/gpuThroughput)
+    bool p2gWarpReduction = true;
     // Tests: run the resident device step (backend/residentStep.hpp) on the
     // host, with the stand-in for the CUDA runtime, where it covers the case
     // (the host step otherwise). Not a back-end for runs.
