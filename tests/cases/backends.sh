@@ -31,6 +31,13 @@ do
     check "log echoes backend $b" "n == 1" n="$n"
 done
 
+# The step's phases, logged once, the same for both back-ends (step/stepPlan.hpp)
+for c in "$serial" "$openmp"
+do
+    n=$(grep -c "^Step plan: scatter+force nodalAfterScatter nodalUpdate gather stress move migrate$" "$c/log.mpmFoam")
+    check "log gives the USL step plan once ($(basename "$c"))" "n == 1" n="$n"
+done
+
 last=$(cd "$serial" && foamListTimes -latestTime 2>/dev/null | tail -1)
 check "the runs reached t = 0.1" "t > 0.0999" t="${last:-0}"
 compared=0 differing=0

@@ -19,7 +19,7 @@ void uniformSuspension(MpmSystem& s, int n, const StepOptions& o, Real alphaS, R
     BoundarySpec b;
     b.conditions = {WallCondition{WallType::periodic, 0}};
     s.setup(box(n, n, n, 0.1), b, o);
-    s.materials().push_back(std::make_unique<NoStress>(0.0));
+    s.materials().push_back(std::make_unique<NoStress>());
     const Real h = 0.1, vol = alphaS*h*h*h/8;
     for (int k = 0; k < 2*n; ++k)
     for (int j = 0; j < 2*n; ++j)

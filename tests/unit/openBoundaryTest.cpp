@@ -105,7 +105,7 @@ TEST(OpenBoundary, WallCrossingIsClampedAndCounted)
     MpmSystem s;
     StepOptions o;
     s.setup(L, spec(L, WallType::noSlip, WallType::slip), o);
-    s.materials().push_back(std::make_unique<NoStress>(1.0));
+    s.materials().push_back(std::make_unique<NoStress>());
     for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 8; ++c)
     {

@@ -297,3 +297,22 @@ TEST(ResidentStep, ComparisonCatchesAWrongStep)
     for (int i = 0; i < 20; ++i) still.step(2e-4);   // the plate never moves
     EXPECT_GT(relativeDifference(still, plate), 1e-6);
 }
+
+// The Courant number's signal speed of resident points is reduced on the
+// device (the host's copy is stale between steps): it equals the host
+// step's, and it follows the points (it changes over the run)
+TEST(ResidentStep, SignalSpeedOnTheDevice)
+{
+    Scene c;
+    c.options.shape = ShapeKind::quadraticBSpline;
+    MpmSystem host, resident;
+    build(host, c, Backend::serial, false);
+    build(resident, c, Backend::serial, true);
+    const Real before = host.maxSignalSpeed();
+    run(host, c, 10);
+    run(resident, c, 10);
+    ASSERT_TRUE(resident.lastStepResident());
+    const Real a = host.maxSignalSpeed(), b = resident.maxSignalSpeed();
+    EXPECT_NEAR(b, a, 1e-10*a);
+    EXPECT_GT(std::abs(a - before), 1e-6*a);
+}

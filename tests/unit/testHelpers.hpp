@@ -5,20 +5,16 @@
 
 namespace mpm::test {
 
-// A law with zero stress and a fixed wave speed: isolates the transfers.
+// A law with zero stress (no wave speed): isolates the transfers.
 class NoStress : public ConstitutiveLaw
 {
 public:
-    explicit NoStress(Real c = 1.0) : c_(c) {}
     const char* typeName() const override { return "noStress"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override { diluteStress(k, s); }
     // Stress-free like dilute grains, but deforming (F and the volume follow
     // the flow, as for a continuum)
     LawParams params() const override { return baseParams(LawType::dilute); }
-    Real waveSpeed(Real) const override { return c_; }
     Real storedEnergy(const Real*, const Real*) const override { return 0; }
-private:
-    Real c_;
 };
 
 inline Lattice box(int nx, int ny, int nz, Real h = 0.1)

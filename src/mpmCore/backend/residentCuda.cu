@@ -105,6 +105,15 @@ struct CudaExec
         if (x < *a) *a = x;
 #endif
     }
+    // x >= 0: a double's bits order as the integers do
+    MPM_HOST_DEVICE static void max(unsigned long long* a, Real x)
+    {
+#ifdef __CUDA_ARCH__
+        atomicMax(a, (unsigned long long)__double_as_longlong(x));
+#else
+        (void)a; (void)x;
+#endif
+    }
     MPM_HOST_DEVICE static void count(unsigned long long* a)
     {
 #ifdef __CUDA_ARCH__

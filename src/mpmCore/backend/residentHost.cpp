@@ -5,6 +5,7 @@
 // StepOptions::residentStandIn (tests); not a back-end for runs.
 #include "residentStepImpl.hpp"
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 namespace mpm {
@@ -43,6 +44,12 @@ struct HostExec
     template<bool Warp> using P2gAdd = PlainAdd;
     static void min(unsigned long long* a, unsigned long long x) { *a = std::min(*a, x); }
     static void count(unsigned long long* a) { ++*a; }
+    static void max(unsigned long long* a, Real x)
+    {
+        Real y;
+        std::memcpy(&y, a, sizeof y);
+        if (x > y) std::memcpy(a, &x, sizeof x);
+    }
 };
 
 } // namespace

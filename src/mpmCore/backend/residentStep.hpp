@@ -81,6 +81,8 @@ public:
     // One step of the configured plan (its migrate phase does nothing:
     // one rank). timers: per phase, the time to queue it; record: runPlan's.
     virtual ResidentResult step(Real dt, Real massTolerance, StepTimers& timers, std::vector<Phase>* record) = 0;
+    // max over the points of signalSpeedPoint (kernels/signalSpeed.hpp)
+    virtual Real maxSignalSpeed() = 0;
     // The grid's mass and velocity, for checks (whole arrays, nNodes each)
     virtual void downloadGrid(std::vector<Real>& mass, std::array<std::vector<Real>, 3>& velocity) = 0;
 };

@@ -9,6 +9,8 @@
 //                              pre-reduced over a warp's points or not
 //   Exec::min(a, x)            *a = min(*a, x) on a counter, atomically
 //   Exec::count(a)             ++*a on a counter, atomically
+//   Exec::max(a, x)            *a = max(*a, x) for x >= 0 on a counter
+//                              holding a double's bits, atomically
 //
 // The kernel bodies are the CPU step's (kernels/*.hpp); the node work that
 // the CPU step does over the boundary's node lists (MpmSystem's ghost
@@ -24,6 +26,7 @@
 #include "../kernels/movePoint.hpp"
 #include "../kernels/nodal.hpp"
 #include "../kernels/p2g.hpp"
+#include "../kernels/signalSpeed.hpp"
 #include "../kernels/stressPoint.hpp"
 #include <chrono>
 #include <cstring>
@@ -46,8 +49,9 @@ struct GhostView
 };
 
 // Counters: first bad (stress), first bad (move), inverted, beyond a wall,
-// contained
-enum Counter { firstBadStress, firstBadMove, invertedPoints, beyondWall, containedPoints, nCounters };
+// contained; the signal speed (a double's bits: for values >= 0 their
+// order is the integers')
+enum Counter { firstBadStress, firstBadMove, invertedPoints, beyondWall, containedPoints, signalSpeed, nCounters };
 
 template<class Exec, class K, int D, bool MassMomentum, bool Force, bool Apic, bool Warp>
 struct P2g
@@ -114,6 +118,13 @@ struct Move
         storePosition(L, periodic, P, p, x);
         if (ls && levelSetContainPoint(L, ls, P, p, dt) == 1) Exec::count(c + containedPoints);
     }
+};
+
+template<class Exec>
+struct SignalSpeed
+{
+    PointView P; const LawParams* laws; unsigned long long* c;
+    MPM_HOST_DEVICE void operator()(Index p) const { Exec::max(c + signalSpeed, signalSpeedPoint(P, laws, p)); }
 };
 
 struct Gravity
@@ -364,7 +375,7 @@ public:
     ResidentResult step(Real dt, Real tol, StepTimers& timers, std::vector<Phase>* record) override
     {
         const Index n = P_.n;
-        const unsigned long long init[nCounters] = {(unsigned long long)n, (unsigned long long)n, 0, 0, 0};
+        const unsigned long long init[nCounters] = {(unsigned long long)n, (unsigned long long)n, 0, 0, 0, 0};
         counters_.upload(init, nCounters);
         dispatchKD(c_.shape, c_.lattice.dim, [&](auto k, auto d)
         {
@@ -376,6 +387,18 @@ public:
         counters_.download(c, nCounters);   // waits for the step
         return {Index(c[firstBadStress]), Index(c[firstBadMove]), Index(c[invertedPoints]),
                 Index(c[beyondWall]), Index(c[containedPoints])};
+    }
+
+    Real maxSignalSpeed() override
+    {
+        const unsigned long long zero[nCounters] = {0, 0, 0, 0, 0, 0};
+        counters_.upload(zero, nCounters);
+        Exec::forEach(P_.n, SignalSpeed<Exec>{P_, laws_.data(), counters_.data()}, "the signal speed kernel");
+        unsigned long long c[nCounters];
+        counters_.download(c, nCounters);
+        Real x;
+        std::memcpy(&x, &c[signalSpeed], sizeof x);
+        return x;
     }
 
 private:

@@ -35,8 +35,10 @@ public:
     virtual LawParams params() const = 0;
 
     // Largest signal speed (e.g. dilatational wave speed) at reference
-    // density rho0 and volume ratio J, for the CFL time step.
-    virtual Real waveSpeed(Real J) const = 0;
+    // density rho0 and volume ratio J, for the CFL time step: the kernel
+    // lawWaveSpeed (lawKernels.hpp) of params(), which the step calls per
+    // point on the host and the device
+    Real waveSpeed(Real J) const { return lawWaveSpeed(params(), J); }
 
     // Extra stability bound on dt for cell size h (e.g. viscous diffusion);
     // +infinity when the law has none.

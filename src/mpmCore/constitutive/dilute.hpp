@@ -23,7 +23,6 @@ public:
         diluteStress(k, s);
     }
     LawParams params() const override { return baseParams(LawType::dilute); }
-    Real waveSpeed(Real) const override { return 0; }
     Real storedEnergy(const Real*, const Real*) const override { return 0; }
     bool needsDeformation() const override { return false; }
 };

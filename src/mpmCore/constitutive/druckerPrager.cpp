@@ -80,12 +80,6 @@ void DruckerPrager::updateStress(const PointKinematics& k, PointStress& s) const
     druckerPragerStress(kernelParams(), k, s);
 }
 
-Real DruckerPrager::waveSpeed(Real) const
-{
-    // Elastic wave speed: plastic flow only softens the material.
-    return std::sqrt(el_.pWaveModulus()/rho0_);
-}
-
 Real DruckerPrager::storedEnergy(const Real* sigma, const Real* F) const
 {
     return el_.complementaryEnergy(sigma)*tensor::det(F);

@@ -43,7 +43,6 @@ public:
     const char* typeName() const override { return "druckerPrager"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override;
     LawParams params() const override;
-    Real waveSpeed(Real J) const override;
 
     // f(sigma) = q - eta p - xi c, in stress units (<= 0 is admissible).
     Real yieldFunction(const Real* sigma) const;

@@ -72,4 +72,31 @@ MPM_HOST_DEVICE inline void updateStress
     }
 }
 
+// Largest signal speed of a law at volume ratio J, at its reference density
+// rho0 (the CFL time step): the dilatational wave speed of the elastic part
+// (plastic flow only softens a material), the Tait fluid's sound speed
+MPM_HOST_DEVICE inline Real lawWaveSpeed(const LawParams& law, Real J)
+{
+    switch (law.type)
+    {
+        case LawType::linearElastic: return std::sqrt(law.linearElastic.el.pWaveModulus()/law.rho0);
+        case LawType::neoHookean:
+        {
+            // The tangent p-wave modulus grows under compression
+            const Real reference = law.neoHookean.el.pWaveModulus();
+            const Real current = reference - 2.0*law.neoHookean.el.lambda*std::log(J);
+            return std::sqrt((current > reference ? current : reference)/law.rho0);
+        }
+        case LawType::newtonianFluid:
+        {
+            const NewtonianFluidParams& c = law.newtonianFluid;
+            return std::sqrt(c.gamma*c.K/law.rho0*std::pow(J, 1.0 - c.gamma));
+        }
+        case LawType::druckerPrager: return std::sqrt(law.druckerPrager.el.pWaveModulus()/law.rho0);
+        case LawType::muIRheology: return std::sqrt(law.muIRheology.el.pWaveModulus()/law.rho0);
+        case LawType::dilute: return 0;
+    }
+    return 0;
+}
+
 } // namespace mpm

@@ -26,11 +26,6 @@ void LinearElastic::updateStress(const PointKinematics& k, PointStress& s) const
     linearElasticStress({el_}, k, s);
 }
 
-Real LinearElastic::waveSpeed(Real) const
-{
-    return std::sqrt(el_.pWaveModulus()/rho0_);
-}
-
 Real LinearElastic::storedEnergy(const Real* sigma, const Real* F) const
 {
     return el_.complementaryEnergy(sigma)*tensor::det(F);

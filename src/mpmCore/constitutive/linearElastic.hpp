@@ -45,7 +45,6 @@ public:
     LawParams params() const override;
     // Dilatational wave speed sqrt((lambda + 2 mu)/rho0); J is ignored
     // because the hypoelastic tangent does not depend on the deformation.
-    Real waveSpeed(Real J) const override;
 
     Real storedEnergy(const Real* sigma, const Real* F) const override;
 };

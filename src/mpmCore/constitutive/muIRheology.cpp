@@ -44,12 +44,6 @@ void MuIRheology::updateStress(const PointKinematics& k, PointStress& s) const
     muIRheologyStress(kernelParams(), k, s);
 }
 
-Real MuIRheology::waveSpeed(Real) const
-{
-    // Elastic wave speed: plastic flow only softens the material.
-    return std::sqrt(el_.pWaveModulus()/rho0_);
-}
-
 Real MuIRheology::storedEnergy(const Real* sigma, const Real* F) const
 {
     return el_.complementaryEnergy(sigma)*tensor::det(F);

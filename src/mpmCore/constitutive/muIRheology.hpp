@@ -48,7 +48,6 @@ public:
     const char* typeName() const override { return "muIRheology"; }
     void updateStress(const PointKinematics& k, PointStress& s) const override;
     LawParams params() const override;
-    Real waveSpeed(Real J) const override;
     Real storedEnergy(const Real* sigma, const Real* F) const override;
 
     // Glass beads of Jop, Forterre & Pouliquen (2006), Fig. 1: the defaults.

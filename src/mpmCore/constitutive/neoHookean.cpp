@@ -27,13 +27,6 @@ void NeoHookean::updateStress(const PointKinematics& k, PointStress& s) const
     neoHookeanStress({el_}, k, s);
 }
 
-Real NeoHookean::waveSpeed(Real J) const
-{
-    const Real reference = el_.pWaveModulus();
-    const Real current = reference - 2.0*el_.lambda*std::log(J);
-    return std::sqrt(std::max(reference, current)/rho0_);
-}
-
 Real NeoHookean::storedEnergy(const Real*, const Real* F) const
 {
     Real I1 = 0;

@@ -26,7 +26,6 @@ public:
     // c^2 = (lambda + 2(mu - lambda ln J))/rho0 (the 1/J of the tangent
     // cancels the current density rho0/J). Never below the reference speed,
     // so the CFL bound is not relaxed in tension.
-    Real waveSpeed(Real J) const override;
 
     // W = mu/2 (tr(F F^T) - 3) - mu ln J + lambda/2 (ln J)^2
     Real storedEnergy(const Real* sigma, const Real* F) const override;

@@ -34,11 +34,6 @@ void NewtonianFluid::updateStress(const PointKinematics& k, PointStress& s) cons
     newtonianFluidStress(kernelParams(), k, s);
 }
 
-Real NewtonianFluid::waveSpeed(Real J) const
-{
-    return std::sqrt(gamma_*K_/rho0_*std::pow(J, 1.0 - gamma_));
-}
-
 Real NewtonianFluid::maxStableDt(Real h) const
 {
     if (mu_ <= 0) return std::numeric_limits<Real>::infinity();

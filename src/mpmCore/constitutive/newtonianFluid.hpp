@@ -27,7 +27,6 @@ public:
 
     // Sound speed c^2 = dp/drho = (gamma K/rho0) J^(1 - gamma): stiffens as
     // the fluid is compressed (J < 1).
-    Real waveSpeed(Real J) const override;
 
     // Explicit viscous bound dt <= rho0 h^2/(8 mu) (+inf for mu = 0).
     // Why 1/8: 2 mu dev(D) makes longitudinal modes diffuse with kinematic

@@ -1,7 +1,9 @@
 // Per-node bodies of the nodal phase that need no neighbour: gravity on the
-// P2G masses and the lumped velocity p/m. The rest of the nodal phase (ghost
-// folds, wall contact, halos, the coupled and consistent-mass solves) works
-// on node lists of the boundary and stays with the host (MpmSystem).
+// P2G masses and the lumped velocity p/m. The ghost folds, fills and the
+// wall contact are bodies over the boundary's ghost list in the resident
+// device step (backend/residentStepImpl.hpp) and loops over it in
+// MpmSystem; halos, friction, open faces and the coupled and
+// consistent-mass solves are MpmSystem's (host) alone.
 #pragma once
 #include "views.hpp"
 

@@ -2,7 +2,9 @@
 //
 // A kernel body (kernels/*.hpp) is written once, as an MPM_HOST_DEVICE
 // function of one point or one node over these views, and launched by every
-// back-end (backend/launch.hpp: serial, OpenMP; backend/cuda: CUDA). The
+// back-end (step/mpmSystem.cpp's loops: serial, OpenMP;
+// backend/forEachOnDevice.cuh: CUDA; backend/residentStepImpl.hpp: the
+// resident step on CUDA and its host stand-in). The
 // views hold raw pointers only, so they are trivially copyable into a CUDA
 // kernel's arguments; on the host they point into Particles and GridState,
 // on the device into the device mirror of the same arrays.

@@ -5,6 +5,7 @@
 #include "../kernels/movePoint.hpp"
 #include "../kernels/nodal.hpp"
 #include "../kernels/p2g.hpp"
+#include "../kernels/signalSpeed.hpp"
 #include "../kernels/stressPoint.hpp"
 #include "../kernels/views.hpp"
 #include "../transfer/stencil.hpp"
@@ -896,8 +897,8 @@ void MpmSystem::stopIfNonFinite(Index firstBad, const char* what)
     std::ostringstream os;
     os << "non-finite " << what << " at step " << stepCount_ + 1
        << " in material point id " << id;
-    if (std::string(what) != "velocity") os << " (material " << material << ")";
-    throw NonFiniteError(os.str(), stepCount_ + 1, id);
+    const bool ofMaterial = std::string(what) != "velocity";
+    throw NonFiniteError(os.str(), stepCount_ + 1, id, ofMaterial ? int(material) : -1);
 }
 
 // Moves every point by the displacement G2P stored (dt already in it).
@@ -1133,6 +1134,36 @@ ResidentConfig MpmSystem::residentConfig() const
     return c;
 }
 
+// The points in the order of their stencils' first nodes, for the resident
+// step's P2G: the points of a run share every node, so a warp adds their
+// sums together before one atomic per node (backend/residentCuda.cu), and
+// consecutive runs are neighbours along x. (A cell's points do not share a
+// stencil with linear hats and cubic B-splines, whose stencils start at
+// the node below each point: block or cell order gives runs of one.)
+void MpmSystem::sortByStencil()
+{
+    const Index n = particles_.size();
+    std::vector<Index> key(n), order(n);
+    const auto& P = particles_;
+    dispatch([&](auto k, auto d)
+    {
+        using K = decltype(k);
+        constexpr int D = decltype(d)::value;
+        for (Index p = 0; p < n; ++p)
+        {
+            Stencil<K, D> s;
+            s.compute(lattice_, P.x[0][p], P.x[1][p], P.x[2][p]);
+            Index first = 0;
+            for (int a = 0; a < D; ++a) first += s.base[a]*lattice_.stride[lattice_.axes[a]];
+            key[p] = first;
+        }
+    });
+    if (std::is_sorted(key.begin(), key.end())) return;
+    for (Index p = 0; p < n; ++p) order[p] = p;
+    std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return key[a] < key[b]; });
+    particles_.permute(order);
+}
+
 void MpmSystem::pullPoints() const
 {
     if (!deviceAhead_) return;
@@ -1171,13 +1202,7 @@ void MpmSystem::stepResident(Real dt)
     }
     if (hostAhead_)
     {
-        // Up in binning-block order, so that P2G's atomics of a warp's
-        // points mostly hit the same few nodes
-        if (options_.reorderPoints)
-        {
-            binning_.build(lattice_, particles_);
-            if (binning_.fragmented()) particles_.permute(binning_.order());
-        }
+        if (options_.reorderPoints) sortByStencil();
         const Index n = particles_.size();
         for (auto& a : L_) a.resize(n);
         for (auto& a : dx_) a.resize(n);
@@ -1282,22 +1307,15 @@ Index MpmSystem::migrate()
 
 Real MpmSystem::maxSignalSpeed() const
 {
-    pullPoints();
-    const auto& P = particles_;
-    const Index n = P.size();
+    // Resident points: reduced on the device, the host's copy being stale
+    if (deviceAhead_) return maxAll(resident_->maxSignalSpeed());
+    const std::vector<LawParams> laws = lawTable();
+    auto& self = const_cast<MpmSystem&>(*this);
+    const PointView P = pointView(self.particles_, self.L_, self.dx_);   // read only
+    const Index n = P.n;
     Real cmax = 0;
     #pragma omp parallel for reduction(max:cmax) if(worthThreads(n))
-    for (Index p = 0; p < n; ++p)
-    {
-        const Real v2 = P.v[0][p]*P.v[0][p] + P.v[1][p]*P.v[1][p] + P.v[2][p]*P.v[2][p];
-        // The law's wave speed is for its reference density rho0; a parcel
-        // of grains in a fluid is lighter (mass = rho0 solidFraction V0), so
-        // its waves are faster by sqrt(rho0 V0 / mass).
-        const ConstitutiveLaw& law = *materials_[P.material[p]];
-        const Real lighter = std::sqrt(law.rho0()*P.volume0[p]/P.mass[p]);
-        const Real c = law.waveSpeed(P.J(p))*lighter + std::sqrt(v2);
-        cmax = std::max(cmax, c);
-    }
+    for (Index p = 0; p < n; ++p) cmax = std::max(cmax, signalSpeedPoint(P, laws.data(), p));
     return maxAll(cmax);
 }
 

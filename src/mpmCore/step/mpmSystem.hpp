@@ -26,19 +26,25 @@
 #include "stepTimers.hpp"
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace mpm {
 
 // Thrown when a point's velocity or stress stops being finite: nothing is
-// written after it, and the message names the step and point id.
+// written after it, and the message names the step and point id, and for
+// a stress its material (index), which the error carries so that a caller
+// can name it (the OpenFOAM layer: by its dictionary name).
 class NonFiniteError : public std::runtime_error
 {
 public:
-    NonFiniteError(const std::string& what, Index step, std::int64_t id)
-    : std::runtime_error(what), step(step), pointId(id) {}
+    NonFiniteError(const std::string& base, Index step, std::int64_t id, int material = -1)
+    : std::runtime_error(material >= 0 ? base + " (material " + std::to_string(material) + ")" : base),
+      step(step), pointId(id), material(material), base(base) {}
     Index step;
     std::int64_t pointId;
+    int material;        // -1: not a material's (a velocity)
+    std::string base;    // the message without the material
 };
 
 // Momentum exchange with a fluid, per node (each real node is a fluid
@@ -142,6 +148,9 @@ public:
     // access counts as a change, uploaded before the next step.
     Particles& particles() { pullPoints(); hostAhead_ = true; return particles_; }
     const Particles& particles() const { pullPoints(); return particles_; }
+    // The number of points on this rank (no transfer: the host and the
+    // device always hold the same points)
+    Index pointCount() const { return particles_.size(); }
     // Why the resident device step does not run this case ("" when it
     // does, or when the back-end has none: cuda or the stand-in only)
     std::string residentUnsupported() const;
@@ -242,6 +251,7 @@ private:
     ResidentConfig residentConfig() const;
     // Brings the host's points up to date when the device is ahead
     void pullPoints() const;
+    void sortByStencil();
     void stressOnDevice(Real dt);
     void movePointsOnDevice(bool apic, Real dt);
     // The open condition through which a point beyond a face at x leaves,

@@ -10,7 +10,6 @@
 #include "completeTimes.H"
 #include <omp.h>
 #include <cstring>
-#include <regex>
 
 Foam::mpmModel::mpmModel(const fvMesh& mesh)
 :
@@ -132,6 +131,8 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
         }
     }
     Info<< nl;
+    // The step's phases, as every back-end runs them (step/stepPlan.hpp)
+    Info<< "Step plan: " << system_.plan().describe().c_str() << nl;
     reportBalance(Info);
     Info<< endl;
     system_.mapToGrid();
@@ -300,7 +301,7 @@ Foam::scalar Foam::mpmModel::deltaT() const
     }
     // No point left anywhere (all gone through an outlet): nothing limits
     // the step; take controlDict's deltaT rather than an infinite one
-    if (returnReduce(label(system_.particles().size()), sumOp<label>()) == 0)
+    if (returnReduce(label(system_.pointCount()), sumOp<label>()) == 0)
     {
         return min(mesh_.time().deltaTValue(), controls_.maxDeltaT);
     }
@@ -355,19 +356,23 @@ void Foam::mpmModel::evolve(scalar dt)
         }
         wallTime_ += dt;
         system_.step(dt);
+        if (!deviceReported_ && controls_.step.backend == mpm::Backend::cuda)
+        {
+            // After the first step: the fluid coupling is set up by then
+            const std::string why = system_.residentUnsupported();
+            Info<< "cuda: " << (why.empty()
+                ? std::string("points and grid resident on the device")
+                : "host-assisted step (the resident one does not cover " + why + ")").c_str() << endl;
+            deviceReported_ = true;
+        }
     }
     catch (const mpm::NonFiniteError& e)
     {
         // The core knows a material by its index: name it
         std::string what(e.what());
-        std::smatch m;
-        if (std::regex_search(what, m, std::regex("\\(material ([0-9]+)\\)")))
+        if (e.material >= 0 && e.material < materials_.size())
         {
-            const label k = std::stoi(m[1].str());
-            if (k < materials_.size())
-            {
-                what = m.prefix().str() + "(material " + materials_.names()[k] + ")" + m.suffix().str();
-            }
+            what = e.base + " (material " + materials_.names()[e.material] + ")";
         }
         FatalErrorInFunction
             << "Stopping at time " << mesh_.time().timeName() << ": "
@@ -585,7 +590,7 @@ void Foam::mpmModel::summary
         reduce(e.second(), maxOp<scalar>());
         total += e.second();
     }
-    const label nPoints = returnReduce(label(system_.particles().size()), sumOp<label>());
+    const label nPoints = returnReduce(label(system_.pointCount()), sumOp<label>());
     auto line = [&](const std::string& name, scalar s)
     {
         os  << "    " << name.c_str() << tab << s << " s" << tab
