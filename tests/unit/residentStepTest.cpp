@@ -79,6 +79,13 @@ void build(MpmSystem& s, const Scene& c, Backend backend, bool standIn)
     }
 }
 
+// The same scene on the host step and on the resident step's stand-in
+void buildPair(MpmSystem& host, MpmSystem& resident, const Scene& c)
+{
+    build(host, c, Backend::serial, false);
+    build(resident, c, Backend::serial, true);
+}
+
 void run(MpmSystem& s, const Scene& c, int steps)
 {
     const Real dt = 2e-4;
@@ -219,8 +226,7 @@ TEST(ResidentStep, StandInAgreesWithTheHostStep)
     for (const Scene& c : scenes())
     {
         MpmSystem host, resident;
-        build(host, c, Backend::serial, false);
-        build(resident, c, Backend::serial, true);
+        buildPair(host, resident, c);
         ASSERT_EQ(resident.residentUnsupported(), "") << name(c);
         run(host, c, 20);
         run(resident, c, 20);
@@ -241,8 +247,7 @@ TEST(ResidentStep, HostChangesGoUp)
     Scene c;
     c.options.shape = ShapeKind::quadraticBSpline;
     MpmSystem host, resident;
-    build(host, c, Backend::serial, false);
-    build(resident, c, Backend::serial, true);
+    buildPair(host, resident, c);
     run(host, c, 5);
     run(resident, c, 5);
     for (MpmSystem* s : {&host, &resident}) s->particles().v[0][3] += 0.5;
@@ -281,8 +286,7 @@ TEST(ResidentStep, ComparisonCatchesAWrongStep)
     Scene c;
     c.options.shape = ShapeKind::quadraticBSpline;
     MpmSystem host, resident;
-    build(host, c, Backend::serial, false);
-    build(resident, c, Backend::serial, true);
+    buildPair(host, resident, c);
     resident.setGravity({0, 0, -9.81*1.001});
     run(host, c, 20);
     run(resident, c, 20);
@@ -291,8 +295,7 @@ TEST(ResidentStep, ComparisonCatchesAWrongStep)
     Scene moving = c;
     moving.plate = true;
     MpmSystem still, plate;
-    build(still, moving, Backend::serial, false);
-    build(plate, moving, Backend::serial, true);
+    buildPair(still, plate, moving);
     run(plate, moving, 20);
     for (int i = 0; i < 20; ++i) still.step(2e-4);   // the plate never moves
     EXPECT_GT(relativeDifference(still, plate), 1e-6);
@@ -306,8 +309,7 @@ TEST(ResidentStep, SignalSpeedOnTheDevice)
     Scene c;
     c.options.shape = ShapeKind::quadraticBSpline;
     MpmSystem host, resident;
-    build(host, c, Backend::serial, false);
-    build(resident, c, Backend::serial, true);
+    buildPair(host, resident, c);
     const Real before = host.maxSignalSpeed();
     run(host, c, 10);
     run(resident, c, 10);

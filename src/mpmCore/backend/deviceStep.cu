@@ -8,6 +8,7 @@
 #include "deviceBuffer.cuh"
 #include "forEachOnDevice.cuh"
 #include "pointArrays.hpp"
+#include "pointBodies.hpp"
 #include "../constitutive/lawKernels.hpp"
 #include "../kernels/g2p.hpp"
 #include "../kernels/movePoint.hpp"
@@ -25,63 +26,9 @@ namespace {
 using cuda::DeviceBuffer;
 using cuda::forEachOnDevice;
 
-// P2G's add on the device: concurrent points share nodes. Points are
-// stored in binning-block order (StepOptions::reorderPoints), so a warp's
-// 32 points lie in one or two blocks and their atomics mostly hit distinct
-// addresses of a few cache lines (docs/gpu.md: the choice is not measured).
-struct AtomicAdd
-{
-    __device__ void operator()(Real* a, Index I, Real x) const { atomicAdd(a + I, x); }
-};
-
-// Shape function and number of solved directions as types, like
-// MpmSystem::dispatch
-template<class Fn>
-void dispatchKD(ShapeKind shape, int dim, Fn&& f)
-{
-    dispatchShape(shape, [&](auto k)
-    {
-        switch (dim)
-        {
-            case 1: f(k, std::integral_constant<int, 1>{}); break;
-            case 2: f(k, std::integral_constant<int, 2>{}); break;
-            default: f(k, std::integral_constant<int, 3>{}); break;
-        }
-    });
-}
-
-template<class F>
-void pick(bool x, F&& f) { if (x) f(std::true_type{}); else f(std::false_type{}); }
-
-// The bodies as functors (a device lambda may not sit in the generic
-// lambdas of the dispatch)
-template<class K, int D, bool MassMomentum, bool Force, bool Apic>
-struct P2gBody
-{
-    Lattice L; PointView P; GridView g; const Real* invRho0; bool grainVolume;
-    __device__ void operator()(Index p) const
-    {
-        p2gPoint<K, D, MassMomentum, Force, Apic>(L, P, g, invRho0, grainVolume, p, AtomicAdd{});
-    }
-};
-
-template<class K, int D, bool Apic>
-struct G2pBody
-{
-    Lattice L; PointView P; GridView g; Real flipRatio; Real dt;
-    __device__ void operator()(Index p) const { g2pPoint<K, D, Apic>(L, P, g, flipRatio, dt, p); }
-};
-
-template<class K, int D>
-struct GradientBody
-{
-    Lattice L; PointView P; Real* v[3];
-    __device__ void operator()(Index p) const
-    {
-        const Real* const w[3] = {v[0], v[1], v[2]};
-        gradientPoint<K, D>(L, P, w, p);
-    }
-};
+using bodies::dispatchKD;
+using bodies::pick;
+using cuda::AtomicAdd;
 
 // The first bad point (lowest index) and the inverted count, reduced with
 // atomics into two device integers
@@ -354,7 +301,7 @@ void DeviceStep::p2g
             {
                 pick(apic, [&](auto a)
                 {
-                    P2gBody<K, D, decltype(mm)::value, decltype(f)::value, decltype(a)::value> body
+                    bodies::P2g<K, D, decltype(mm)::value, decltype(f)::value, decltype(a)::value, AtomicAdd> body
                     {L, m.P, m.g, m.invRho0.data(), grainVolume};
                     forEachOnDevice(m.P.n, body, "the P2G kernel");
                 });
@@ -372,7 +319,7 @@ void DeviceStep::g2p(const Lattice& L, ShapeKind shape, bool apic, Real flipRati
         constexpr int D = decltype(d)::value;
         pick(apic, [&](auto a)
         {
-            G2pBody<K, D, decltype(a)::value> body{L, m.P, m.g, flipRatio, dt};
+            bodies::G2p<K, D, decltype(a)::value> body{L, m.P, m.g, flipRatio, dt};
             forEachOnDevice(m.P.n, body, "the G2P kernel");
         });
     });
@@ -384,7 +331,7 @@ void DeviceStep::gradient(const Lattice& L, ShapeKind shape, bool fromVelocityOl
     Real* const* v = fromVelocityOld ? m.g.velocityOld : m.g.velocity;
     dispatchKD(shape, L.dim, [&](auto k, auto d)
     {
-        GradientBody<decltype(k), decltype(d)::value> body{L, m.P, {v[0], v[1], v[2]}};
+        bodies::Gradient<decltype(k), decltype(d)::value> body{L, m.P, {v[0], v[1], v[2]}};
         forEachOnDevice(m.P.n, body, "the velocity gradient kernel");
     });
 }

@@ -31,4 +31,11 @@ void forEachOnDevice(Index n, Body body, const char* name)
     cudaCheckLaunch(name);
 }
 
+// P2G's add on the device: concurrent points share nodes. Points stored in
+// block or stencil order keep a warp's atomics on a few cache lines.
+struct AtomicAdd
+{
+    __device__ void operator()(Real* a, Index I, Real x) const { atomicAdd(a + I, x); }
+};
+
 } // namespace mpm::cuda

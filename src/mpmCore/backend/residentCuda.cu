@@ -61,14 +61,9 @@ struct WarpReducedAdd
     }
 };
 
-struct AtomicAdd
-{
-    __device__ void operator()(Real* a, Index I, Real x) const { atomicAdd(a + I, x); }
-};
-
 struct CudaExec
 {
-    template<bool Warp> using P2gAdd = std::conditional_t<Warp, WarpReducedAdd, AtomicAdd>;
+    template<bool Warp> using P2gAdd = std::conditional_t<Warp, WarpReducedAdd, cuda::AtomicAdd>;
 
     template<class T> using Buffer = cuda::DeviceBuffer<T>;
 

@@ -20,6 +20,7 @@
 // order: the plan's (step/stepPlan.hpp).
 #pragma once
 #include "pointArrays.hpp"
+#include "pointBodies.hpp"
 #include "residentStep.hpp"
 #include "../kernels/g2p.hpp"
 #include "../kernels/levelSetWall.hpp"
@@ -52,35 +53,6 @@ struct GhostView
 // contained; the signal speed (a double's bits: for values >= 0 their
 // order is the integers')
 enum Counter { firstBadStress, firstBadMove, invertedPoints, beyondWall, containedPoints, signalSpeed, nCounters };
-
-template<class Exec, class K, int D, bool MassMomentum, bool Force, bool Apic, bool Warp>
-struct P2g
-{
-    Lattice L; PointView P; GridView g; const Real* invRho0; bool grainVolume;
-    MPM_HOST_DEVICE void operator()(Index p) const
-    {
-        using Add = typename Exec::template P2gAdd<Warp>;
-        p2gPoint<K, D, MassMomentum, Force, Apic>(L, P, g, invRho0, grainVolume, p, Add{});
-    }
-};
-
-template<class K, int D, bool Apic>
-struct G2p
-{
-    Lattice L; PointView P; GridView g; Real flipRatio; Real dt;
-    MPM_HOST_DEVICE void operator()(Index p) const { g2pPoint<K, D, Apic>(L, P, g, flipRatio, dt, p); }
-};
-
-template<class K, int D>
-struct Gradient
-{
-    Lattice L; PointView P; Real* v[3];
-    MPM_HOST_DEVICE void operator()(Index p) const
-    {
-        const Real* const w[3] = {v[0], v[1], v[2]};
-        gradientPoint<K, D>(L, P, w, p);
-    }
-};
 
 template<class Exec>
 struct Stress
@@ -235,22 +207,8 @@ struct ContactSign
     }
 };
 
-template<class F>
-void pick(bool x, F&& f) { if (x) f(std::true_type{}); else f(std::false_type{}); }
-
-template<class Fn>
-void dispatchKD(ShapeKind shape, int dim, Fn&& f)
-{
-    dispatchShape(shape, [&](auto k)
-    {
-        switch (dim)
-        {
-            case 1: f(k, std::integral_constant<int, 1>{}); break;
-            case 2: f(k, std::integral_constant<int, 2>{}); break;
-            default: f(k, std::integral_constant<int, 3>{}); break;
-        }
-    });
-}
+using bodies::dispatchKD;
+using bodies::pick;
 
 template<class Exec>
 class Step final : public ResidentStep
@@ -451,7 +409,7 @@ private:
             case Phase::gather:
                 pick(c_.apic, [&](auto a)
                 {
-                    G2p<K, D, decltype(a)::value> body{c_.lattice, P_, g_, c_.flipRatio, dt};
+                    bodies::G2p<K, D, decltype(a)::value> body{c_.lattice, P_, g_, c_.flipRatio, dt};
                     Exec::forEach(P_.n, body, "the G2P kernel");
                 });
                 break;
@@ -494,8 +452,9 @@ private:
                 {
                     pick(c_.p2gWarpReduction, [&](auto w)
                     {
-                        P2g<Exec, K, D, decltype(mm)::value, decltype(f)::value, decltype(a)::value,
-                            decltype(w)::value> body{c_.lattice, P_, g_, invRho0_.data(), c_.grainVolume};
+                        using Add = typename Exec::template P2gAdd<decltype(w)::value>;
+                        bodies::P2g<K, D, decltype(mm)::value, decltype(f)::value, decltype(a)::value, Add> body
+                        {c_.lattice, P_, g_, invRho0_.data(), c_.grainVolume};
                         Exec::forEach(P_.n, body, "the P2G kernel");
                     });
                 });
@@ -506,7 +465,7 @@ private:
     template<class K, int D>
     void gradient(Real* const v[3])
     {
-        Gradient<K, D> body{c_.lattice, P_, {v[0], v[1], v[2]}};
+        bodies::Gradient<K, D> body{c_.lattice, P_, {v[0], v[1], v[2]}};
         Exec::forEach(P_.n, body, "the velocity gradient kernel");
     }
 
