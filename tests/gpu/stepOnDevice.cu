@@ -10,7 +10,8 @@
 //  * the block in a slip box and on a slip level-set sphere (resident), and
 //    with consistent mass, periodic axes and an outlet (host-assisted);
 //  * a Drucker-Prager granular column collapsing in a box of slip walls
-//    with a Coulomb-friction floor (QBS and CBS, FLIP, USL; host-assisted).
+//    with a Coulomb-friction floor (QBS and CBS, FLIP, USL), resident and
+//    host-assisted.
 //
 // 20 steps each; per point (matched by id) the displacement, the velocity
 // and the stress of the two runs must agree to 1e-9 relative to the
@@ -285,7 +286,10 @@ int main()
         L.nCells = {12, 10, 12};
         c.boundary.faceCondition[4].assign(std::size_t(L.nCells[0])*L.nCells[1], 1);
         c.name = std::string("granular column ") + shapeName(shape);
-        c.resident = false;   // Coulomb friction walls: host-assisted
+        cases.push_back(c);
+        c.options.deviceResident = false;
+        c.resident = false;
+        c.name = std::string("granular column ") + shapeName(shape) + " host-assisted";
         cases.push_back(c);
     }
     int failures = 0;

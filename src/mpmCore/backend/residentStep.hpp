@@ -15,12 +15,12 @@
 //
 // What it covers (MpmSystem::residentUnsupported says why not otherwise):
 // one rank; any shape function, dimension, transfer and stress update;
-// lumped mass; gravity; box walls of the noSlip and slip kinds (the ghost
-// folds with the contact decision of unilateral walls); level-set walls
-// and obstacles that are not outlets, moving ones included. Not yet: Coulomb
-// friction walls, open faces and inlets, periodic axes, consistent mass,
-// the fluid coupling and decomposed runs: those keep the host-assisted
-// step (backend/deviceStep.hpp).
+// lumped mass; gravity; box walls noSlip, slip and friction (the ghost
+// folds with the contact decision of unilateral walls, Coulomb friction);
+// level-set walls and obstacles that are not outlets, moving ones
+// included. Not yet: open faces and inlets, periodic axes, consistent
+// mass, the fluid coupling and decomposed runs: those keep the
+// host-assisted step (backend/deviceStep.hpp).
 #pragma once
 #include "../constitutive/lawKernels.hpp"
 #include "../grid/boundary.hpp"
@@ -50,6 +50,7 @@ struct ResidentConfig
     bool p2gWarpReduction = true;        // StepOptions::p2gWarpReduction
     std::array<Real, 3> gravity{0, 0, 0};
     std::vector<Boundary::Ghost> ghosts;
+    std::vector<Boundary::FrictionNode> frictionNodes;
     std::vector<LawParams> laws;
     std::vector<Real> invRho0;
 };

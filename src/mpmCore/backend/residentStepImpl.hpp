@@ -22,6 +22,7 @@
 #include "pointArrays.hpp"
 #include "pointBodies.hpp"
 #include "residentStep.hpp"
+#include "../kernels/frictionWall.hpp"
 #include "../kernels/g2p.hpp"
 #include "../kernels/levelSetWall.hpp"
 #include "../kernels/movePoint.hpp"
@@ -29,6 +30,7 @@
 #include "../kernels/p2g.hpp"
 #include "../kernels/signalSpeed.hpp"
 #include "../kernels/stressPoint.hpp"
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
@@ -46,7 +48,23 @@ struct GhostView
     const Real* sign[3] = {};
     const int* axis = nullptr;          // unilateral axis or -1
     const Real* outward = nullptr;
+    const Real* mu = nullptr;           // Coulomb coefficient (friction walls) or 0
     Real* stepSign[3] = {};
+};
+
+// The friction walls' node work (kernels/frictionWall.hpp) grouped by node:
+// node[i]'s operations are [start[i], start[i+1]), in MpmSystem::
+// applyFriction's order (first-layer nodes, then the images' slides),
+// which a node's thread runs in turn
+struct FrictionView
+{
+    Index n = 0;
+    const Index* node = nullptr;
+    const Index* start = nullptr;
+    const int* axis = nullptr;
+    const int* firstLayer = nullptr;
+    const Real* outward = nullptr;
+    const Real* mu = nullptr;
 };
 
 // Counters: first bad (stress), first bad (move), inverted, beyond a wall,
@@ -112,16 +130,43 @@ struct LumpedVelocity
 };
 
 // The uncoupled lumped update v = (p + dt f)/m (MpmSystem::nodalUpdate with
-// solveMass), then the level-set walls' condition
+// solveMass)
 struct NodalUpdate
 {
-    GridView g; Real dt; Real tol; LevelSetView ls;
+    GridView g; Real dt; Real tol;
     MPM_HOST_DEVICE void operator()(Index I) const
     {
         const Real m = g.mass[I];
         const Real inv = m > tol ? 1.0/m : 0.0;
         for (int d = 0; d < 3; ++d) g.velocity[d][I] = (g.momentum[d][I] + dt*g.force[d][I])*inv;
-        if (ls) levelSetWallNode(ls, g.mass, g.velocity, tol, I);
+    }
+};
+
+// The friction walls' impulses: each contact ghost's into its image
+template<class Exec>
+struct FrictionImpulse
+{
+    GhostView G; GridView g; Real* J[3]; Real dt;
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        const int a = G.axis[k];
+        if (!(G.mu[k] > 0) || G.stepSign[a][k] > 0) return;   // no friction, or no contact
+        Exec::add(J[a] + G.image[k], frictionGhostImpulse(g, G.ghost[k], a, G.outward[k], dt));
+    }
+};
+
+// ... then each node's first-layer operations and slides, in order
+struct FrictionNodes
+{
+    FrictionView F; const Real* mass; Real* J[3]; Real* v[3]; Real tol;
+    MPM_HOST_DEVICE void operator()(Index i) const
+    {
+        const Index I = F.node[i];
+        for (Index q = F.start[i]; q < F.start[i + 1]; ++q)
+        {
+            if (F.firstLayer[q]) frictionFirstLayer(J, mass, v, tol, I, F.axis[q], F.outward[q], F.mu[q]);
+            else frictionSlide(J, mass, v, tol, I, F.axis[q], F.mu[q]);
+        }
     }
 };
 
@@ -234,21 +279,23 @@ public:
         const Index n = Index(gh.size());
         std::vector<Index> ghost(n), image(n);
         std::vector<int> axis(n);
-        std::vector<Real> sign(3*std::size_t(n)), outward(n);
+        std::vector<Real> sign(3*std::size_t(n)), outward(n), mu(n);
         for (Index k = 0; k < n; ++k)
         {
             ghost[k] = gh[k].ghost; image[k] = gh[k].image;
-            axis[k] = gh[k].unilateralAxis; outward[k] = gh[k].outward;
+            axis[k] = gh[k].unilateralAxis; outward[k] = gh[k].outward; mu[k] = gh[k].mu;
             for (int d = 0; d < 3; ++d) sign[d*std::size_t(n) + k] = gh[k].sign[d];
         }
         std::vector<Index> both(ghost);
         both.insert(both.end(), image.begin(), image.end());
         ghostIndex_.upload(both.data(), both.size());
         ghostAxis_.upload(axis.data(), axis.size());
-        ghostReal_.resize(7*std::size_t(n));
+        // sign[3], outward, stepSign[3], mu
+        ghostReal_.resize(8*std::size_t(n));
         std::vector<Real> reals(sign);
         reals.insert(reals.end(), outward.begin(), outward.end());
         reals.resize(7*std::size_t(n), 0.0);
+        reals.insert(reals.end(), mu.begin(), mu.end());
         if (n) ghostReal_.upload(reals.data(), reals.size());
         G_ = GhostView();
         G_.n = n;
@@ -260,7 +307,42 @@ public:
             G_.stepSign[d] = ghostReal_.data() + (4 + d)*n;
         }
         G_.outward = ghostReal_.data() + 3*n;
+        G_.mu = ghostReal_.data() + 7*n;
         G_.axis = ghostAxis_.data();
+        configureFriction(c);
+    }
+
+    // The friction operations grouped by node, in applyFriction's order
+    void configureFriction(const ResidentConfig& c)
+    {
+        struct Op { Index node; int axis; int firstLayer; Real outward; Real mu; };
+        std::vector<Op> ops;
+        for (const auto& f : c.frictionNodes) ops.push_back({f.node, f.axis, 1, f.outward, f.mu});
+        for (const auto& g : c.ghosts) if (g.mu > 0) ops.push_back({g.image, g.unilateralAxis, 0, 0.0, g.mu});
+        std::stable_sort(ops.begin(), ops.end(), [](const Op& a, const Op& b) { return a.node < b.node; });
+        std::vector<Index> node, start;
+        std::vector<int> ints(2*ops.size());
+        std::vector<Real> reals(2*ops.size());
+        for (std::size_t q = 0; q < ops.size(); ++q)
+        {
+            if (q == 0 || ops[q].node != ops[q - 1].node) { node.push_back(ops[q].node); start.push_back(Index(q)); }
+            ints[q] = ops[q].axis; ints[ops.size() + q] = ops[q].firstLayer;
+            reals[q] = ops[q].outward; reals[ops.size() + q] = ops[q].mu;
+        }
+        start.push_back(Index(ops.size()));
+        const Index nNodes = Index(node.size());
+        node.insert(node.end(), start.begin(), start.end());
+        frictionIndex_.upload(node.data(), node.size());
+        frictionInt_.upload(ints.data(), ints.size());
+        frictionReal_.upload(reals.data(), reals.size());
+        F_ = FrictionView();
+        F_.n = ops.empty() ? 0 : nNodes;
+        F_.node = frictionIndex_.data();
+        F_.start = frictionIndex_.data() + nNodes;
+        F_.axis = frictionInt_.data();
+        F_.firstLayer = frictionInt_.data() + ops.size();
+        F_.outward = frictionReal_.data();
+        F_.mu = frictionReal_.data() + ops.size();
     }
 
     void setLevelSet(const LevelSetView& h, Index nNodes, Index nWalls) override
@@ -401,9 +483,9 @@ private:
             case Phase::foldForce: foldVector(g_.force); break;
             case Phase::nodalUpdate:
             {
-                NodalUpdate u{g_, dt, tol, ls_};
+                NodalUpdate u{g_, dt, tol};
                 Exec::forEach(g_.n, u, "the nodal update kernel");
-                fillGhosts(g_.velocity);
+                walls(g_.velocity, dt, tol);
                 break;
             }
             case Phase::gather:
@@ -422,12 +504,7 @@ private:
                 foldVector(g_.momentum);
                 LumpedVelocity lv{g_, {g_.velocity[0], g_.velocity[1], g_.velocity[2]}, tol};
                 Exec::forEach(g_.n, lv, "the nodal velocity kernel");
-                if (ls_)
-                {
-                    LevelSetNode w{ls_, g_.mass, {g_.velocity[0], g_.velocity[1], g_.velocity[2]}, tol};
-                    Exec::forEach(g_.n, w, "the level-set wall kernel");
-                }
-                fillGhosts(g_.velocity);
+                walls(g_.velocity, 0, tol);   // the re-map: no force, dt 0
                 break;
             }
             case Phase::gradientFromNew: gradient<K, D>(g_.velocity); break;
@@ -467,6 +544,27 @@ private:
     {
         bodies::Gradient<K, D> body{c_.lattice, P_, {v[0], v[1], v[2]}};
         Exec::forEach(P_.n, body, "the velocity gradient kernel");
+    }
+
+    // After an updated velocity, in MpmSystem's order: friction walls,
+    // level-set walls, the ghost fill
+    void walls(Real* const v[3], Real dt, Real tol)
+    {
+        if (F_.n > 0)
+        {
+            Real* J[3];
+            for (int d = 0; d < 3; ++d) J[d] = trial_.data() + d*g_.n;
+            Exec::zero(trial_.data(), 3*std::size_t(g_.n));
+            Exec::forEach(G_.n, FrictionImpulse<Exec>{G_, g_, {J[0], J[1], J[2]}, dt}, "the friction impulse kernel");
+            Exec::forEach(F_.n, FrictionNodes{F_, g_.mass, {J[0], J[1], J[2]}, {v[0], v[1], v[2]}, tol},
+                          "the friction kernel");
+        }
+        if (ls_)
+        {
+            LevelSetNode w{ls_, g_.mass, {v[0], v[1], v[2]}, tol};
+            Exec::forEach(g_.n, w, "the level-set wall kernel");
+        }
+        fillGhosts(v);
     }
 
     void foldScalar(Real* a)
@@ -511,6 +609,10 @@ private:
     Buffer<int> ghostAxis_;
     Buffer<Real> ghostReal_;
     GhostView G_;
+    Buffer<Index> frictionIndex_;
+    Buffer<int> frictionInt_;
+    Buffer<Real> frictionReal_;
+    FrictionView F_;
     Buffer<Real> lsReal_;
     Buffer<int> lsInt_;
     LevelSetView ls_;

@@ -1,5 +1,6 @@
 #include "mpmSystem.hpp"
 #include "../constitutive/tensorOps.hpp"
+#include "../kernels/frictionWall.hpp"
 #include "../kernels/g2p.hpp"
 #include "../kernels/levelSetWall.hpp"
 #include "../kernels/movePoint.hpp"
@@ -670,57 +671,34 @@ void MpmSystem::solveMass(const std::array<std::vector<Real>, 3>& rhs, std::arra
 
 void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v, Real dt)
 {
-    // Coulomb contact of friction walls (Bardenhagen et al. 2000), per image
-    // node and wall: the tangential speed is reduced by mu times the normal
-    // impulse the wall delivers to that node in this step (divided by the
-    // node's mass), never reversed. The wall pushes in two ways: by the
-    // mirror fold (a contact ghost's normal momentum and force enter its
-    // image with the sign reversed instead of added: an impulse
-    // 2 (p_g + dt f_g).n away from the wall, n pointing into it), and on the
-    // first node layer by removing a normal velocity still approaching the
-    // wall. The fold does most of the work, so a bound taken from the second
-    // alone gave a fraction of mu (tests/unit/frictionWallTest.cpp). The
-    // ghosts still hold their own momentum and force after the fold. dt = 0
-    // (the MUSL re-map): the momentum's fold only.
+    // Coulomb contact of friction walls (kernels/frictionWall.hpp), per
+    // image node and wall. The wall pushes in two ways: by the mirror fold
+    // of its contact ghosts, and on the first node layer by removing a
+    // normal velocity still approaching the wall. The fold does most of the
+    // work, so a bound taken from the second alone gave a fraction of mu
+    // (tests/unit/frictionWallTest.cpp). The ghosts still hold their own
+    // momentum and force after the fold.
     const auto& ghosts = boundary_.ghosts();
-    const auto& g = grid_;
+    const GridView g = gridView(grid_);
     auto& J = wallImpulse_;
     for (auto& a : J) a.resize(lattice_.nNodes, 0.0);   // zero between calls
+    Real* const Jp[3] = {J[0].data(), J[1].data(), J[2].data()};
+    Real* const vp[3] = {v[0].data(), v[1].data(), v[2].data()};
     for (const Index k : region_.ghosts())
     {
         const auto& gh = ghosts[k];
         if (gh.mu <= 0 || ghostSign_[k][gh.unilateralAxis] > 0) continue;   // no friction, or no contact
-        const int a = gh.unilateralAxis;
-        J[a][gh.image] += 2*(g.momentum[a][gh.ghost] + dt*g.force[a][gh.ghost])*gh.outward;
+        J[gh.unilateralAxis][gh.image] += frictionGhostImpulse(g, gh.ghost, gh.unilateralAxis, gh.outward, dt);
     }
     const Real tol = massTolerance_;
-    // Coulomb on node I against the wall normal to axis a; clears J there,
-    // so a node listed twice (first layer and image) is treated once.
-    auto slide = [&](Index I, int a, Real mu)
-    {
-        const Real Jn = J[a][I];
-        J[a][I] = 0;
-        if (Jn <= 0 || g.mass[I] <= tol) return;
-        Real vt2 = 0;
-        for (int d = 0; d < 3; ++d) if (d != a) vt2 += v[d][I]*v[d][I];
-        const Real vt = std::sqrt(vt2), dv = mu*Jn/g.mass[I];
-        const Real scale = vt > dv ? 1.0 - dv/vt : 0.0;
-        for (int d = 0; d < 3; ++d) if (d != a) v[d][I] *= scale;
-    };
     for (const auto& fn : boundary_.frictionNodes())
     {
-        const Real vn = v[fn.axis][fn.node]*fn.outward;
-        if (vn > 0)
-        {
-            J[fn.axis][fn.node] += g.mass[fn.node]*vn;
-            v[fn.axis][fn.node] = 0;
-        }
-        slide(fn.node, fn.axis, fn.mu);
+        frictionFirstLayer(Jp, g.mass, vp, tol, fn.node, fn.axis, fn.outward, fn.mu);
     }
     for (const Index k : region_.ghosts())
     {
         const auto& gh = ghosts[k];
-        if (gh.mu > 0) slide(gh.image, gh.unilateralAxis, gh.mu);
+        if (gh.mu > 0) frictionSlide(Jp, g.mass, vp, tol, gh.image, gh.unilateralAxis, gh.mu);
     }
 }
 
@@ -1110,9 +1088,6 @@ std::string MpmSystem::residentUnsupported() const
     if (options_.massMatrix != MassMatrix::lumped) return "consistent mass";
     for (int a = 0; a < 3; ++a) if (boundary_.periodic(a)) return "periodic axes";
     if (boundary_.hasOpenFaces() || !boundary_.inletNodes().empty()) return "open faces";
-    bool friction = !boundary_.frictionNodes().empty();
-    for (const auto& g : boundary_.ghosts()) friction = friction || g.mu > 0;
-    if (friction) return "Coulomb friction walls";
     if (levelSet_.hasOutlets()) return "level-set outlets";
     return "";
 }
@@ -1191,6 +1166,7 @@ void MpmSystem::stepResident(Real dt)
     {
         ResidentConfig full = c;
         full.ghosts = boundary_.ghosts();
+        full.frictionNodes = boundary_.frictionNodes();
         r.configure(full);
         residentKey_ = c;
         residentConfigured_ = true;
