@@ -7,8 +7,9 @@
 //    gravity, for every shape function (LH, QBS, CBS), transfer (FLIP 0.99,
 //    APIC) and stress update (USF, USL, MUSL);
 //    each resident and host-assisted;
-//  * the block in a slip box and on a slip level-set sphere (resident), and
-//    with consistent mass, periodic axes and an outlet (host-assisted);
+//  * the block in a slip box, on a slip level-set sphere, periodic along x
+//    (resident), and with consistent mass, a fluid drag and an outlet
+//    (host-assisted);
 //  * a Drucker-Prager granular column collapsing in a box of slip walls
 //    with a Coulomb-friction floor (QBS and CBS, FLIP, USL), resident and
 //    host-assisted.
@@ -260,8 +261,10 @@ int main()
         c.boundary.faceCondition[0].assign(10*12, 1);
         c.boundary.faceCondition[1].assign(10*12, 1);
         c.acrossX = true;
+        c.resident = true;
         c.name = "elastic block, periodic along x " + s;
         cases.push_back(c);
+        c.resident = false;
         c.acrossX = false;
         c.boundary = BoundarySpec();
         c.coupled = true;

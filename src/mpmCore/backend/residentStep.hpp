@@ -17,10 +17,10 @@
 // one rank; any shape function, dimension, transfer and stress update;
 // lumped mass; gravity; box walls noSlip, slip and friction (the ghost
 // folds with the contact decision of unilateral walls, Coulomb friction);
-// level-set walls and obstacles that are not outlets, moving ones
-// included. Not yet: open faces and inlets, periodic axes, consistent
-// mass, the fluid coupling and decomposed runs: those keep the
-// host-assisted step (backend/deviceStep.hpp).
+// periodic axes; level-set walls and obstacles that are not outlets,
+// moving ones included. Not yet: open faces and inlets, consistent mass,
+// the fluid coupling and decomposed runs: those keep the host-assisted
+// step (backend/deviceStep.hpp).
 #pragma once
 #include "../constitutive/lawKernels.hpp"
 #include "../grid/boundary.hpp"
@@ -51,6 +51,8 @@ struct ResidentConfig
     std::array<Real, 3> gravity{0, 0, 0};
     std::vector<Boundary::Ghost> ghosts;
     std::vector<Boundary::FrictionNode> frictionNodes;
+    std::array<bool, 3> periodic{false, false, false};
+    std::vector<std::pair<Index, Index>> periodicCopies;   // Boundary's
     std::vector<LawParams> laws;
     std::vector<Real> invRho0;
 };

@@ -32,6 +32,7 @@
 #include "../kernels/stressPoint.hpp"
 #include <algorithm>
 #include <chrono>
+#include <initializer_list>
 #include <cstring>
 #include <stdexcept>
 #include <type_traits>
@@ -89,11 +90,10 @@ struct Stress
 template<class Exec>
 struct Move
 {
-    Lattice L; PointView P; bool frozen; LevelSetView ls; Real dt;
+    Lattice L; PointView P; bool periodic[3]; bool frozen; LevelSetView ls; Real dt;
     int* flags; unsigned long long* c;
     MPM_HOST_DEVICE void operator()(Index p) const
     {
-        const bool periodic[3] = {false, false, false};
         Real x[3];
         const int f = advancePoint(L, periodic, frozen, P, p, x);
         flags[p] = f;
@@ -211,6 +211,28 @@ struct FillGhosts
     }
 };
 
+// The serial halo of periodic axes (MpmSystem::sumHalo, copyHalo): each
+// periodic copy's values summed into its canonical node, or the canonical
+// node's copied back (the canonical node is never a copy)
+template<class Exec>
+struct PeriodicSum
+{
+    const Index* copy; const Index* canonical; Real* a[6]; int count;
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        for (int j = 0; j < count; ++j) Exec::add(a[j] + canonical[k], a[j][copy[k]]);
+    }
+};
+
+struct PeriodicCopy
+{
+    const Index* copy; const Index* canonical; Real* a[3];
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        for (int j = 0; j < 3; ++j) a[j][copy[k]] = a[j][canonical[k]];
+    }
+};
+
 // The contact decision of unilateral walls (MpmSystem::decideWallContact),
 // in three launches: each image's own trial momentum, plus every ghost's,
 // then the signs
@@ -310,6 +332,14 @@ public:
         G_.mu = ghostReal_.data() + 7*n;
         G_.axis = ghostAxis_.data();
         configureFriction(c);
+        nPeriodic_ = Index(c.periodicCopies.size());
+        std::vector<Index> pc(2*c.periodicCopies.size());
+        for (std::size_t k = 0; k < c.periodicCopies.size(); ++k)
+        {
+            pc[k] = c.periodicCopies[k].first;
+            pc[c.periodicCopies.size() + k] = c.periodicCopies[k].second;
+        }
+        periodic_.upload(pc.data(), pc.size());
     }
 
     // The friction operations grouped by node, in applyFriction's order
@@ -457,6 +487,9 @@ private:
                 // MpmSystem::nodalAfterScatter without halo (one rank)
                 Gravity gr{g_, {c_.gravity[0], c_.gravity[1], c_.gravity[2]}};
                 Exec::forEach(g_.n, gr, "the gravity kernel");
+                if (withForce) sumPeriodic({g_.mass, g_.volume, g_.momentum[0], g_.momentum[1], g_.momentum[2]},
+                                           g_.force);
+                else sumPeriodic({g_.mass, g_.volume, g_.momentum[0], g_.momentum[1], g_.momentum[2]}, nullptr);
                 foldScalar(g_.mass);
                 foldScalar(g_.volume);
                 contact(dt, withForce);
@@ -480,7 +513,10 @@ private:
                 scatter<K, D>(false, true);
                 break;
             }
-            case Phase::foldForce: foldVector(g_.force); break;
+            case Phase::foldForce:
+                sumPeriodic({g_.force[0], g_.force[1], g_.force[2]}, nullptr);
+                foldVector(g_.force);
+                break;
             case Phase::nodalUpdate:
             {
                 NodalUpdate u{g_, dt, tol};
@@ -501,6 +537,7 @@ private:
                 break;
             case Phase::nodalAfterRemap:
             {
+                sumPeriodic({g_.momentum[0], g_.momentum[1], g_.momentum[2]}, nullptr);
                 foldVector(g_.momentum);
                 LumpedVelocity lv{g_, {g_.velocity[0], g_.velocity[1], g_.velocity[2]}, tol};
                 Exec::forEach(g_.n, lv, "the nodal velocity kernel");
@@ -510,7 +547,8 @@ private:
             case Phase::gradientFromNew: gradient<K, D>(g_.velocity); break;
             case Phase::move:
             {
-                Move<Exec> m{c_.lattice, P_, c_.frozen, ls_, dt, flags_.data(), counters_.data()};
+                Move<Exec> m{c_.lattice, P_, {c_.periodic[0], c_.periodic[1], c_.periodic[2]}, c_.frozen, ls_, dt,
+                             flags_.data(), counters_.data()};
                 Exec::forEach(P_.n, m, "the point advance kernel");
                 break;
             }
@@ -581,6 +619,24 @@ private:
     void fillGhosts(Real* const v[3])
     {
         Exec::forEach(G_.n, FillGhosts{G_, {v[0], v[1], v[2]}}, "the ghost fill kernel");
+        if (nPeriodic_ > 0)
+        {
+            Exec::forEach(nPeriodic_, PeriodicCopy{periodic_.data(), periodic_.data() + nPeriodic_, {v[0], v[1], v[2]}},
+                          "the periodic copy kernel");
+        }
+    }
+
+    // The periodic copies summed into their canonical nodes: the arrays
+    // listed, and the three of `more` if given
+    void sumPeriodic(std::initializer_list<Real*> arrays, Real* const* more)
+    {
+        if (nPeriodic_ == 0) return;
+        PeriodicSum<Exec> s{periodic_.data(), periodic_.data() + nPeriodic_, {}, 0};
+        for (Real* a : arrays) s.a[s.count++] = a;
+        Exec::forEach(nPeriodic_, s, "the periodic sum kernel");
+        if (!more) return;
+        PeriodicSum<Exec> f{periodic_.data(), periodic_.data() + nPeriodic_, {more[0], more[1], more[2]}, 3};
+        Exec::forEach(nPeriodic_, f, "the periodic sum kernel");
     }
 
     void contact(Real dt, bool withForce)
@@ -609,6 +665,8 @@ private:
     Buffer<int> ghostAxis_;
     Buffer<Real> ghostReal_;
     GhostView G_;
+    Buffer<Index> periodic_;             // copies, then their canonical nodes
+    Index nPeriodic_ = 0;
     Buffer<Index> frictionIndex_;
     Buffer<int> frictionInt_;
     Buffer<Real> frictionReal_;

@@ -1086,7 +1086,6 @@ std::string MpmSystem::residentUnsupported() const
     if (subdomain_) return "decomposed runs";
     if (coupling_.active()) return "the fluid coupling";
     if (options_.massMatrix != MassMatrix::lumped) return "consistent mass";
-    for (int a = 0; a < 3; ++a) if (boundary_.periodic(a)) return "periodic axes";
     if (boundary_.hasOpenFaces() || !boundary_.inletNodes().empty()) return "open faces";
     if (levelSet_.hasOutlets()) return "level-set outlets";
     return "";
@@ -1167,6 +1166,8 @@ void MpmSystem::stepResident(Real dt)
         ResidentConfig full = c;
         full.ghosts = boundary_.ghosts();
         full.frictionNodes = boundary_.frictionNodes();
+        full.periodicCopies = boundary_.periodicCopies();
+        for (int a = 0; a < 3; ++a) full.periodic[a] = boundary_.periodic(a);
         r.configure(full);
         residentKey_ = c;
         residentConfigured_ = true;
@@ -1202,7 +1203,7 @@ void MpmSystem::stepResident(Real dt)
     pullPoints();
     r.downloadMoveFlags(moveFlags_);
     const PointView P = pointView(particles_, L_, dx_);
-    const bool periodic[3] = {false, false, false};
+    const bool periodic[3] = {boundary_.periodic(0), boundary_.periodic(1), boundary_.periodic(2)};
     leaving_.assign(0, -1);
     for (Index p = 0; p < n; ++p)
     {
