@@ -242,7 +242,7 @@ TEST(CoupledStability, RejectsWhatItDoesNotModel)
 {
     CoupledSetup c = dilute(CouplingMode::twoWay, DragVariant::linearised, true, 0.3, 1);
     EXPECT_THROW(coupledSymbol(c, 0.0), std::invalid_argument);
-    c.solid.mass = MassKind::consistent;
+    c.solid.mass = MassMatrix::consistent;
     try { coupledSymbol(c, 0.5); FAIL() << "no exception"; }
     catch (const std::invalid_argument& e) { EXPECT_NE(std::string(e.what()).find("lumped"), std::string::npos); }
 }

@@ -17,7 +17,7 @@ namespace {
 
 constexpr Real pi = 3.14159265358979323846;
 
-AnalysisSetup makeSetup(Model model, ShapeKind shape, Real alpha, MassKind mass,
+AnalysisSetup makeSetup(Model model, ShapeKind shape, Real alpha, MassMatrix mass,
                 std::vector<Real> offsets, StressUpdate scheme = StressUpdate::USL)
 {
     AnalysisSetup s;
@@ -82,7 +82,7 @@ TEST(StabilitySymbol, MatchesDirectParticleGridLoop)
     int compared = 0;
     for (ShapeKind shape : {ShapeKind::linearHat, ShapeKind::cubicBSpline})
         for (Real alpha : {0.0, 1.0})
-            for (MassKind mass : {MassKind::lumped, MassKind::consistent})
+            for (MassMatrix mass : {MassMatrix::lumped, MassMatrix::consistent})
                 for (const Case& c : cases)
                     for (const auto& offsets : offsetSets)
                     {
@@ -108,7 +108,7 @@ TEST(StabilitySymbol, MatchesDirectParticleGridLoop)
 // Amplification per step of a single real Fourier mode, measured directly.
 TEST(StabilitySymbol, OnePointPerCellMeasuredGrowthEqualsG)
 {
-    const AnalysisSetup s = makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 0.0, MassKind::lumped, {0.5});
+    const AnalysisSetup s = makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 0.0, MassMatrix::lumped, {0.5});
     const int cells = 16, q = 3;
     const PeriodicMpm1D loop(s, cells);
     std::vector<Real> v(cells), sigma(cells, 0.0);
@@ -127,7 +127,7 @@ TEST(StabilitySymbol, GlobalFormulaDerivedMatchesLoopPublishedOnlyForFlip)
     const int cells = 10;
     const Real Fo = 0.3;
     for (ShapeKind shape : allShapes)
-        for (MassKind mass : {MassKind::lumped, MassKind::consistent})
+        for (MassMatrix mass : {MassMatrix::lumped, MassMatrix::consistent})
             for (Real alpha : {0.0, 0.5, 1.0})
             {
                 const AnalysisSetup s = makeSetup(Model::diffusion, shape, alpha, mass, {0.2, 0.7});
@@ -151,7 +151,7 @@ TEST(StabilitySymbol, GlobalFormulaDerivedMatchesLoopPublishedOnlyForFlip)
 // limits (3 + 2 sqrt 2)/4 and 2.
 TEST(StabilitySymbol, LinearHatMidCellClosedForms)
 {
-    AnalysisSetup s = makeSetup(Model::diffusion, ShapeKind::linearHat, 0.0, MassKind::lumped, {0.5});
+    AnalysisSetup s = makeSetup(Model::diffusion, ShapeKind::linearHat, 0.0, MassMatrix::lumped, {0.5});
     for (Real Fo : {0.1, 0.7})
         for (Real th = 0.05; th < pi; th += 0.3)
         {
@@ -176,7 +176,7 @@ TEST(StabilitySymbol, MuslAndUsfShareEigenvalues)
     for (ShapeKind shape : allShapes)
         for (Real alpha : {0.0, 0.5, 1.0})
         {
-            AnalysisSetup usf = makeSetup(Model::wave, shape, alpha, MassKind::lumped, {0.15, 0.6}, StressUpdate::USF);
+            AnalysisSetup usf = makeSetup(Model::wave, shape, alpha, MassMatrix::lumped, {0.15, 0.6}, StressUpdate::USF);
             AnalysisSetup musl = usf;
             musl.scheme = StressUpdate::MUSL;
             for (Real th : {0.3, 1.7, 3.0})
@@ -204,7 +204,7 @@ TEST(StabilityPic, DampsEveryNonzeroWavenumberMoreAsFoGrows)
     for (ShapeKind shape : allShapes)
         for (const auto& offsets : offsetSets)
         {
-            const AnalysisSetup s = makeSetup(Model::diffusion, shape, 0.0, MassKind::lumped, offsets);
+            const AnalysisSetup s = makeSetup(Model::diffusion, shape, 0.0, MassMatrix::lumped, offsets);
             for (int i = 1; i <= 32; ++i)
             {
                 const Real kh = pi*i/32;
@@ -233,7 +233,7 @@ TEST(StabilityPic, DampsWaveAtEveryNonzeroWavenumber)
         for (StressUpdate sc : {StressUpdate::USL, StressUpdate::USF, StressUpdate::MUSL})
             for (Real off : {0.5, 0.3})
             {
-                const AnalysisSetup s = makeSetup(Model::wave, shape, 0.0, MassKind::lumped, {off}, sc);
+                const AnalysisSetup s = makeSetup(Model::wave, shape, 0.0, MassMatrix::lumped, {off}, sc);
                 for (int i = 1; i < 32; ++i)
                     EXPECT_LT(spectralRadius(s, pi*i/32, 0.5), 1.0 - 1e-6) << describe(s);
                 const Real atPi = spectralRadius(s, pi, 0.5);
@@ -250,8 +250,8 @@ TEST(StabilityFlip, UndampedAtLowWavenumbers)
     for (ShapeKind shape : allShapes)
         for (Real off : {0.5, 0.1})
         {
-            const AnalysisSetup flip = makeSetup(Model::diffusion, shape, 1.0, MassKind::lumped, {off});
-            const AnalysisSetup pic = makeSetup(Model::diffusion, shape, 0.0, MassKind::lumped, {off});
+            const AnalysisSetup flip = makeSetup(Model::diffusion, shape, 1.0, MassMatrix::lumped, {off});
+            const AnalysisSetup pic = makeSetup(Model::diffusion, shape, 0.0, MassMatrix::lumped, {off});
             const Real k1 = 0.02, k2 = 0.01;
             auto err = [&](const AnalysisSetup& s, Real kh) {
                 return std::abs(analyseMode(s, kh, Fo).front().G - std::exp(-Fo*kh*kh)); };
@@ -269,8 +269,8 @@ TEST(StabilityFlip, UndampedAtLowWavenumbers)
     for (ShapeKind shape : {ShapeKind::linearHat, ShapeKind::cubicBSpline})
         for (StressUpdate sc : {StressUpdate::USL, StressUpdate::USF, StressUpdate::MUSL})
         {
-            const AnalysisSetup flip = makeSetup(Model::wave, shape, 1.0, MassKind::lumped, {0.5}, sc);
-            const AnalysisSetup pic = makeSetup(Model::wave, shape, 0.0, MassKind::lumped, {0.5}, sc);
+            const AnalysisSetup flip = makeSetup(Model::wave, shape, 1.0, MassMatrix::lumped, {0.5}, sc);
+            const AnalysisSetup pic = makeSetup(Model::wave, shape, 0.0, MassMatrix::lumped, {0.5}, sc);
             const Real d1 = 1 - physicalAbsG(flip, 0.02, 0.5), d2 = 1 - physicalAbsG(flip, 0.01, 0.5);
             if (sc == StressUpdate::USL) EXPECT_NEAR(d1/d2, 16.0, 0.2) << describe(flip);
             else EXPECT_LT(std::abs(d1), 1e-13) << describe(flip);
@@ -291,7 +291,7 @@ TEST(StabilityShapes, PicAlikeOnlyInTheMeasuredSense)
     for (Real alpha : {0.0, 0.5, 1.0})
         for (Real th : {0.4, 1.3, 2.9})
         {
-            const AnalysisSetup lh = makeSetup(Model::diffusion, ShapeKind::linearHat, alpha, MassKind::lumped, {0.5});
+            const AnalysisSetup lh = makeSetup(Model::diffusion, ShapeKind::linearHat, alpha, MassMatrix::lumped, {0.5});
             AnalysisSetup qbs = lh;
             qbs.shape = ShapeKind::quadraticBSpline;
             EXPECT_NEAR(std::abs(amplificationSymbol(lh, th, 0.3)(0, 0) - amplificationSymbol(qbs, th, 0.3)(0, 0)), 0.0, 1e-14);
@@ -304,7 +304,7 @@ TEST(StabilityShapes, PicAlikeOnlyInTheMeasuredSense)
             Real lo = 2, hi = -1;
             for (ShapeKind shape : allShapes)
             {
-                const Real g = physicalAbsG(makeSetup(Model::diffusion, shape, 0.0, MassKind::lumped, {0.5}), kh, Fo);
+                const Real g = physicalAbsG(makeSetup(Model::diffusion, shape, 0.0, MassMatrix::lumped, {0.5}), kh, Fo);
                 lo = std::min(lo, g); hi = std::max(hi, g);
             }
             EXPECT_LT(hi - lo, 0.06) << "Fo=" << Fo << " kh=" << kh;
@@ -316,12 +316,12 @@ TEST(StabilityShapes, PicAlikeOnlyInTheMeasuredSense)
                             Expect{ShapeKind::quadraticBSpline, 0.5, 0.25}, Expect{ShapeKind::quadraticBSpline, 0.1, 0.25},
                             Expect{ShapeKind::cubicBSpline, 0.5, 1.0/3}, Expect{ShapeKind::cubicBSpline, 0.1, 1.0/3}})
     {
-        const AnalysisSetup s = makeSetup(Model::diffusion, e.shape, 0.0, MassKind::lumped, {e.offset});
+        const AnalysisSetup s = makeSetup(Model::diffusion, e.shape, 0.0, MassMatrix::lumped, {e.offset});
         EXPECT_NEAR((1 - physicalAbsG(s, kh, Fo))/(kh*kh) - Fo, e.m2, 1e-4) << describe(s);
     }
     // Limits differ by about a factor 2 (LH 1.457, CBS 2.844).
-    const Real lh = limitOf(makeSetup(Model::diffusion, ShapeKind::linearHat, 0.0, MassKind::lumped, {0.5}));
-    const Real cbs = limitOf(makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 0.0, MassKind::lumped, {0.5}));
+    const Real lh = limitOf(makeSetup(Model::diffusion, ShapeKind::linearHat, 0.0, MassMatrix::lumped, {0.5}));
+    const Real cbs = limitOf(makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 0.0, MassMatrix::lumped, {0.5}));
     EXPECT_GT(cbs/lh, 1.9);
 }
 
@@ -336,9 +336,9 @@ TEST(StabilityShapes, CubicBSplineLeastSensitiveToPointPosition)
         {
             Real cv[3];
             for (int k = 0; k < 3; ++k)
-                cv[k] = limitVariation(makeSetup(c.model, allShapes[k], alpha, MassKind::lumped, {0.5}, c.scheme));
-            EXPECT_LT(cv[2], cv[0]) << modelName(c.model) << ' ' << schemeName(c.scheme) << " alpha=" << alpha;
-            EXPECT_LT(cv[2], cv[1]) << modelName(c.model) << ' ' << schemeName(c.scheme) << " alpha=" << alpha;
+                cv[k] = limitVariation(makeSetup(c.model, allShapes[k], alpha, MassMatrix::lumped, {0.5}, c.scheme));
+            EXPECT_LT(cv[2], cv[0]) << modelName(c.model) << ' ' << stressUpdateName(c.scheme) << " alpha=" << alpha;
+            EXPECT_LT(cv[2], cv[1]) << modelName(c.model) << ' ' << stressUpdateName(c.scheme) << " alpha=" << alpha;
         }
 }
 
@@ -356,8 +356,8 @@ TEST(StabilityShapes, LinearHatLimitDropsNearNode)
             Real prev = c.drops ? 1e30 : -1;
             for (Real o : offsets)
             {
-                const Real L = limitOf(makeSetup(c.model, ShapeKind::linearHat, alpha, MassKind::lumped, {o}, c.scheme));
-                if (c.drops) EXPECT_LT(L, prev) << modelName(c.model) << ' ' << schemeName(c.scheme) << " o=" << o;
+                const Real L = limitOf(makeSetup(c.model, ShapeKind::linearHat, alpha, MassMatrix::lumped, {o}, c.scheme));
+                if (c.drops) EXPECT_LT(L, prev) << modelName(c.model) << ' ' << stressUpdateName(c.scheme) << " o=" << o;
                 else EXPECT_GT(L, prev) << "USL wave o=" << o;
                 prev = L;
             }
@@ -371,15 +371,15 @@ TEST(StabilityMass, ConsistentOnePointIndependentOfAlphaAndSingularAtMidCell)
 {
     for (ShapeKind shape : allShapes)
     {
-        const AnalysisSetup pic = makeSetup(Model::diffusion, shape, 0.0, MassKind::consistent, {0.1});
+        const AnalysisSetup pic = makeSetup(Model::diffusion, shape, 0.0, MassMatrix::consistent, {0.1});
         AnalysisSetup flip = pic;
         flip.alpha = 1.0;
         for (Real th : {0.5, 2.0, 3.1})
             EXPECT_NEAR(std::abs(amplificationSymbol(pic, th, 0.2)(0, 0) - amplificationSymbol(flip, th, 0.2)(0, 0)), 0.0, 1e-12);
         bool singular = false;
-        amplificationSymbol(makeSetup(Model::diffusion, shape, 0.0, MassKind::consistent, {0.5}), pi, 0.1, &singular);
+        amplificationSymbol(makeSetup(Model::diffusion, shape, 0.0, MassMatrix::consistent, {0.5}), pi, 0.1, &singular);
         EXPECT_TRUE(singular);
-        EXPECT_EQ(limitOf(makeSetup(Model::diffusion, shape, 0.0, MassKind::consistent, {0.5})), 0.0);
+        EXPECT_EQ(limitOf(makeSetup(Model::diffusion, shape, 0.0, MassMatrix::consistent, {0.5})), 0.0);
     }
 }
 
@@ -388,7 +388,7 @@ TEST(StabilityMass, ConsistentOnePointIndependentOfAlphaAndSingularAtMidCell)
 // low kh, and the limit search treats all eigenvalues.
 TEST(StabilityMultiPoint, PhysicalBranchAndAliases)
 {
-    const AnalysisSetup s = makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 1.0, MassKind::lumped, {0.25, 0.75});
+    const AnalysisSetup s = makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 1.0, MassMatrix::lumped, {0.25, 0.75});
     const ModeResult low = analyseMode(s, 0.1, 0.2).front();
     EXPECT_GT(low.match, 0.9999);
     EXPECT_NEAR(low.G.real(), std::exp(-0.2*0.01), 1e-4);
@@ -428,7 +428,7 @@ TEST(StabilityPublishedTable, ToolRowsAreTheClosedFormsNotThePublishedValues)
     };
     for (const Row& r : rows)
     {
-        const auto s = makeSetup(Model::diffusion, r.shape, r.alpha, MassKind::lumped, {0.5});
+        const auto s = makeSetup(Model::diffusion, r.shape, r.alpha, MassMatrix::lumped, {0.5});
         const Complex G = analyseMode(s, r.kh, Fo).front().G;
         EXPECT_NEAR(G.real(), r.closedForm, 1e-14) << r.test;
         EXPECT_NEAR(G.imag(), 0, 1e-14) << r.test;
@@ -447,15 +447,15 @@ TEST(StabilityPublishedTable, ToolRowsAreTheClosedFormsNotThePublishedValues)
 TEST(StabilityPublishedTable, ShapesAgreeAtSmallKhAndDecayGrowsAsKhSquared)
 {
     const Real Fo = 0.5;
-    for (MassKind m : {MassKind::lumped, MassKind::consistent})
+    for (MassMatrix m : {MassMatrix::lumped, MassMatrix::consistent})
         for (const std::vector<Real>& offsets : {std::vector<Real>{0.5}, std::vector<Real>{0.25, 0.75}})
         {
             const Real lh = physicalAbsG(makeSetup(Model::diffusion, ShapeKind::linearHat, 1, m, offsets), 0.126, Fo);
             const Real cbs = physicalAbsG(makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 1, m, offsets), 0.126, Fo);
-            EXPECT_LT(std::abs(lh - cbs), 1e-4) << massName(m) << " " << offsets.size();
+            EXPECT_LT(std::abs(lh - cbs), 1e-4) << massMatrixName(m) << " " << offsets.size();
             EXPECT_NEAR(1 - lh, Fo*0.126*0.126, 1e-4);
         }
-    const auto cbs = makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 1, MassKind::lumped, {0.5});
+    const auto cbs = makeSetup(Model::diffusion, ShapeKind::cubicBSpline, 1, MassMatrix::lumped, {0.5});
     const Real ratio = (1 - physicalAbsG(cbs, 0.628, Fo))/(1 - physicalAbsG(cbs, 0.126, Fo));
     EXPECT_GT(ratio, 15);                          // ~ (0.628/0.126)^2 = 24.8 less O(kh^2)
     EXPECT_NEAR((1 - 0.90)/(1 - 0.98), 5.0, 1e-12); // the table's: linear in kh

@@ -65,7 +65,7 @@ int runAdvisor(int argc, char** argv)
         else if (a == "--theta-intervals") cc.thetaIntervals = int(toReal(next()));
         else if (a == "--shape") { const std::string n = next(); if (!parseShape(n, base.solid.shape)) fail("unknown shape " + n); }
         else if (a == "--alpha") base.solid.alpha = toReal(next());
-        else if (a == "--scheme") { if (!parseScheme(next(), base.solid.scheme)) fail("unknown scheme (USL USF MUSL)"); }
+        else if (a == "--scheme") { if (!parseStressUpdate(next(), base.solid.scheme)) fail("unknown scheme (USL USF MUSL)"); }
         else if (a == "--mode") { if (!parseCouplingMode(next(), base.mode)) fail("unknown mode; valid: oneWay twoWayMomentum twoWay"); }
         else if (a == "--forces")
         {

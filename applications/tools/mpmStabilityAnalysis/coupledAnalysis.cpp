@@ -110,7 +110,7 @@ CoupledOptions parse(int argc, char** argv)
         else if (a == "--shape") { const std::string n = next(); if (!parseShape(n, o.base.solid.shape)) fail("unknown shape " + n + "; valid: " + validShapeNames()); }
         else if (a == "--alpha") o.base.solid.alpha = toReal(next());
         else if (a == "--offsets") o.base.solid.offsets = realList(next());
-        else if (a == "--scheme") { if (!parseScheme(next(), o.base.solid.scheme)) fail("unknown scheme (USL USF MUSL)"); }
+        else if (a == "--scheme") { if (!parseStressUpdate(next(), o.base.solid.scheme)) fail("unknown scheme (USL USF MUSL)"); }
         else if (a == "--number") o.base.solidNumber = toReal(next());
         else if (a == "--sub-cycles") o.base.subCycles = int(toReal(next()));
         else if (a == "--auto-sub-cycles") o.autoSolidNumber = toReal(next());

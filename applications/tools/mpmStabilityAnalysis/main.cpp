@@ -28,7 +28,7 @@ struct Options
     Model model = Model::diffusion;
     std::vector<ShapeKind> shapes{ShapeKind::linearHat};
     std::vector<Real> alphas{0.0};
-    std::vector<MassKind> masses{MassKind::lumped};
+    std::vector<MassMatrix> masses{MassMatrix::lumped};
     std::vector<StressUpdate> schemes{StressUpdate::USL};
     std::vector<Real> offsets{0.5};
     std::vector<Real> numbers;        // Fo or CFL values
@@ -94,8 +94,8 @@ Options parse(int argc, char** argv)
             o.masses.clear();
             for (const std::string& n : splitList(next()))
             {
-                MassKind m;
-                if (!parseMass(n, m)) fail("unknown mass " + n);
+                MassMatrix m;
+                if (!parseMassMatrix(n, m)) fail("unknown mass " + n);
                 o.masses.push_back(m);
             }
         }
@@ -105,7 +105,7 @@ Options parse(int argc, char** argv)
             for (const std::string& n : splitList(next()))
             {
                 StressUpdate s;
-                if (!parseScheme(n, s)) fail("unknown scheme " + n);
+                if (!parseStressUpdate(n, s)) fail("unknown scheme " + n);
                 o.schemes.push_back(s);
             }
         }
@@ -138,7 +138,7 @@ std::vector<AnalysisSetup> combinations(const Options& o)
     std::vector<AnalysisSetup> out;
     for (ShapeKind k : o.shapes)
         for (Real al : o.alphas)
-            for (MassKind m : o.masses)
+            for (MassMatrix m : o.masses)
                 for (StressUpdate sc : o.schemes)
                 {
                     AnalysisSetup s;
@@ -160,7 +160,7 @@ std::string setupFields(const AnalysisSetup& s)
 {
     std::ostringstream os;
     os << modelName(s.model) << ',' << shapeShortName(s.shape) << ',' << s.alpha << ','
-       << massName(s.mass) << ',' << (s.model == Model::wave ? schemeName(s.scheme) : "-")
+       << massMatrixName(s.mass) << ',' << (s.model == Model::wave ? stressUpdateName(s.scheme) : "-")
        << ',' << offsetsField(s.offsets);
     return os.str();
 }
@@ -234,7 +234,7 @@ void runLimits(const Options& o, const std::vector<AnalysisSetup>& setups)
     {
         const StabilityLimit L = stabilityLimit(s, o.limitOptions);
         std::printf("%-5s %6.3f %-10s %-5s %-14s %s%11.6f\n", shapeShortName(s.shape), s.alpha,
-                    massName(s.mass), s.model == Model::wave ? schemeName(s.scheme) : "-",
+                    massMatrixName(s.mass), s.model == Model::wave ? stressUpdateName(s.scheme) : "-",
                     offsetsField(s.offsets).c_str(), L.reachedMax ? ">=" : "  ", L.limit);
         if (csv) csv << setupFields(s) << ',' << L.limit << ',' << int(L.reachedMax) << '\n';
     }

@@ -1,29 +1,18 @@
 #include "backend.hpp"
+#include "../common/enumTable.hpp"
 #include <initializer_list>
 
 namespace mpm {
 
-const char* backendName(Backend b)
+namespace
 {
-    switch (b)
-    {
-        case Backend::serial: return "serial";
-        case Backend::openmp: return "openmp";
-        case Backend::cuda: return "cuda";
-    }
-    return "?";
+const auto backends = enumTable<Backend>({{Backend::serial, "serial"}, {Backend::openmp, "openmp"}, {Backend::cuda, "cuda"}});
+const std::string backendList = backends.validNames();
 }
 
-bool parseBackend(const std::string& name, Backend& b)
-{
-    for (Backend c : {Backend::serial, Backend::openmp, Backend::cuda})
-    {
-        if (name == backendName(c)) { b = c; return true; }
-    }
-    return false;
-}
-
-const char* validBackendNames() { return "serial openmp cuda"; }
+const char* backendName(Backend b) { return backends.name(b); }
+bool parseBackend(const std::string& name, Backend& b) { return backends.parse(name, b); }
+const char* validBackendNames() { return backendList.c_str(); }
 
 #ifdef MPM_HAVE_CUDA
 std::string cudaUnavailableReason();   // backend/ (the CUDA library)

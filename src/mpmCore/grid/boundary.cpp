@@ -1,34 +1,22 @@
 #include "boundary.hpp"
+#include "../common/enumTable.hpp"
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace mpm {
 
-const char* wallTypeName(WallType t)
+namespace
 {
-    switch (t)
-    {
-        case WallType::noSlip: return "noSlip";
-        case WallType::slip: return "slip";
-        case WallType::friction: return "friction";
-        case WallType::outlet: return "outlet";
-        case WallType::inlet: return "inlet";
-        default: return "periodic";
-    }
+const auto wallTypes = enumTable<WallType>
+({{WallType::noSlip, "noSlip"}, {WallType::slip, "slip"}, {WallType::friction, "friction"},
+  {WallType::periodic, "periodic"}, {WallType::outlet, "outlet"}, {WallType::inlet, "inlet"}});
+const std::string wallTypeList = wallTypes.validNames();
 }
 
-bool parseWallType(const std::string& name, WallType& t)
-{
-    for (auto c : {WallType::noSlip, WallType::slip, WallType::friction, WallType::periodic,
-                   WallType::outlet, WallType::inlet})
-    {
-        if (name == wallTypeName(c)) { t = c; return true; }
-    }
-    return false;
-}
-
-const char* validWallTypeNames() { return "noSlip slip friction periodic outlet inlet"; }
+const char* wallTypeName(WallType t) { return wallTypes.name(t); }
+bool parseWallType(const std::string& name, WallType& t) { return wallTypes.parse(name, t); }
+const char* validWallTypeNames() { return wallTypeList.c_str(); }
 
 int BoundarySpec::conditionAt(const Lattice& L, int side, int i, int j, int k) const
 {

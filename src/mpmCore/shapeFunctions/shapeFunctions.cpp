@@ -1,4 +1,5 @@
 #include "shapeFunctions.hpp"
+#include "../common/enumTable.hpp"
 
 namespace mpm {
 
@@ -41,27 +42,18 @@ int kernelWidth(ShapeKind kind)
     return dispatchShape(kind, [](auto k) { return decltype(k)::width; });
 }
 
-const char* shapeName(ShapeKind kind)
+namespace
 {
-    switch (kind)
-    {
-        case ShapeKind::linearHat: return "linearHat";
-        case ShapeKind::quadraticBSpline: return "quadraticBSpline";
-        default: return "cubicBSpline";
-    }
+// LH, QBS, CBS: accepted aliases
+const auto shapes = enumTable<ShapeKind>
+({{ShapeKind::linearHat, "linearHat"}, {ShapeKind::quadraticBSpline, "quadraticBSpline"},
+  {ShapeKind::cubicBSpline, "cubicBSpline"}, {ShapeKind::linearHat, "LH"},
+  {ShapeKind::quadraticBSpline, "QBS"}, {ShapeKind::cubicBSpline, "CBS"}});
+const std::string shapeList = shapes.validNames() + " (or LH QBS CBS)";
 }
 
-bool parseShape(const std::string& name, ShapeKind& kind)
-{
-    if (name == "linearHat" || name == "LH") { kind = ShapeKind::linearHat; return true; }
-    if (name == "quadraticBSpline" || name == "QBS") { kind = ShapeKind::quadraticBSpline; return true; }
-    if (name == "cubicBSpline" || name == "CBS") { kind = ShapeKind::cubicBSpline; return true; }
-    return false;
-}
-
-const char* validShapeNames()
-{
-    return "linearHat quadraticBSpline cubicBSpline (or LH QBS CBS)";
-}
+const char* shapeName(ShapeKind kind) { return shapes.name(kind); }
+bool parseShape(const std::string& name, ShapeKind& kind) { return shapes.parse(name, kind); }
+const char* validShapeNames() { return shapeList.c_str(); }
 
 } // namespace mpm

@@ -94,7 +94,7 @@ std::vector<std::string> adviceLines(const CoupledCase& cc, const CoupledAdvice&
         l.push_back(format("  MPM: %s wave speed %.6g m/s (parcel at aS %.4g): step courant %.3g h/c = %.6g s; "
                            "pure-MPM limit CFL %.6g (%s alpha %g %s): margin %.3g",
                            cc.lawName.c_str(), a.step.waveSpeed, aS, cc.courant, a.step.dtMpm, a.pureMpm.limit,
-                           shapeShortName(c.solid.shape), c.solid.alpha, schemeName(c.solid.scheme),
+                           shapeShortName(c.solid.shape), c.solid.alpha, stressUpdateName(c.solid.scheme),
                            a.pureMpm.limit/cc.courant));
     else
         l.push_back(format("  MPM: %s grains are stress-free: no MPM step limit, 1 sub-cycle", cc.lawName.c_str()));

@@ -1,4 +1,5 @@
 #include "coupledSymbol.hpp"
+#include "../common/enumTable.hpp"
 #include "stepSymbol.hpp"
 #include <cmath>
 #include <limits>
@@ -10,39 +11,22 @@ namespace stability {
 
 using namespace detail;
 
-const char* couplingModeName(CouplingMode m)
+namespace
 {
-    switch (m)
-    {
-        case CouplingMode::oneWay: return "oneWay";
-        case CouplingMode::twoWayMomentum: return "twoWayMomentum";
-        default: return "twoWay";
-    }
+const auto couplingModes = enumTable<CouplingMode>
+({{CouplingMode::oneWay, "oneWay"}, {CouplingMode::twoWayMomentum, "twoWayMomentum"}, {CouplingMode::twoWay, "twoWay"}});
+const auto dragVariants = enumTable<DragVariant>
+({{DragVariant::explicitDrag, "explicit"}, {DragVariant::frozenFluid, "frozen"}, {DragVariant::linearised, "linearised"}});
+const auto parameters = enumTable<CoupledParameter>
+({{CoupledParameter::dtOverTau, "dtOverTau"}, {CoupledParameter::alphaS, "alphaS"},
+  {CoupledParameter::solidNumber, "number"}, {CoupledParameter::densityRatio, "densityRatio"},
+  {CoupledParameter::viscousNumber, "viscousNumber"}});
 }
 
-const char* dragVariantName(DragVariant v)
-{
-    switch (v)
-    {
-        case DragVariant::explicitDrag: return "explicit";
-        case DragVariant::frozenFluid: return "frozen";
-        default: return "linearised";
-    }
-}
-
-bool parseCouplingMode(const std::string& n, CouplingMode& m)
-{
-    for (auto c : {CouplingMode::oneWay, CouplingMode::twoWayMomentum, CouplingMode::twoWay})
-        if (n == couplingModeName(c)) { m = c; return true; }
-    return false;
-}
-
-bool parseDragVariant(const std::string& n, DragVariant& v)
-{
-    for (auto c : {DragVariant::explicitDrag, DragVariant::frozenFluid, DragVariant::linearised})
-        if (n == dragVariantName(c)) { v = c; return true; }
-    return false;
-}
+const char* couplingModeName(CouplingMode m) { return couplingModes.name(m); }
+const char* dragVariantName(DragVariant v) { return dragVariants.name(v); }
+bool parseCouplingMode(const std::string& n, CouplingMode& m) { return couplingModes.parse(n, m); }
+bool parseDragVariant(const std::string& n, DragVariant& v) { return dragVariants.parse(n, v); }
 
 std::string describe(const CoupledSetup& c)
 {
@@ -83,7 +67,7 @@ ImplicitDrag implicitDrag(const CoupledSetup& c)
 
 ComplexMatrix coupledSymbol(const CoupledSetup& c, Real theta)
 {
-    if (c.solid.mass != MassKind::lumped)
+    if (c.solid.mass != MassMatrix::lumped)
         throw std::invalid_argument("coupled analysis: the lumped mass only");
     if (!(theta > 0))
         throw std::invalid_argument("coupled analysis: theta must be > 0 (the mean flow is not a mode)");
@@ -198,25 +182,8 @@ Real coupledMaxSpectralRadius(const CoupledSetup& c, int thetaIntervals)
     return rho;
 }
 
-const char* parameterName(CoupledParameter p)
-{
-    switch (p)
-    {
-        case CoupledParameter::dtOverTau: return "dtOverTau";
-        case CoupledParameter::alphaS: return "alphaS";
-        case CoupledParameter::solidNumber: return "number";
-        case CoupledParameter::densityRatio: return "densityRatio";
-        default: return "viscousNumber";
-    }
-}
-
-bool parseParameter(const std::string& n, CoupledParameter& p)
-{
-    for (auto c : {CoupledParameter::dtOverTau, CoupledParameter::alphaS, CoupledParameter::solidNumber,
-                   CoupledParameter::densityRatio, CoupledParameter::viscousNumber})
-        if (n == parameterName(c)) { p = c; return true; }
-    return false;
-}
+const char* parameterName(CoupledParameter p) { return parameters.name(p); }
+bool parseParameter(const std::string& n, CoupledParameter& p) { return parameters.parse(n, p); }
 
 void setParameter(CoupledSetup& c, CoupledParameter p, Real x)
 {

@@ -117,7 +117,7 @@ TransferSymbols transferSymbols(const AnalysisSetup& s, Real theta)
             t.beta[l] += kernelGradient(s.shape, d)*phase;
         }
     }
-    if (s.mass == MassKind::consistent)
+    if (s.mass == MassMatrix::consistent)
     {
         // M(theta) = m sum_l |a_l|^2 with m = rho h / npc.
         Real norm2 = 0;

@@ -30,7 +30,7 @@ std::vector<Real> globalDiffusionMatrix(const AnalysisSetup& s, int cells, Real 
 
     const Mat C = m*N;
     Mat M;
-    if (s.mass == MassKind::lumped) M = Mat(C.rowwise().sum().asDiagonal());
+    if (s.mass == MassMatrix::lumped) M = Mat(C.rowwise().sum().asDiagonal());
     else M = m*N*N.transpose();
     const Eigen::FullPivLU<Mat> lu(M);
 

@@ -39,7 +39,7 @@ PeriodicMpm1D::PeriodicMpm1D(const AnalysisSetup& s, int cells, const PhysicalPa
     lumpedMass_.assign(cells_, 0.0);
     for (std::size_t i = 0; i < node_.size(); ++i) lumpedMass_[node_[i]] += pointMass_*w_[i];
 
-    if (s.mass == MassKind::consistent)
+    if (s.mass == MassMatrix::consistent)
     {
         Eigen::MatrixXd M = Eigen::MatrixXd::Zero(cells_, cells_);
         for (int p = 0; p < np; ++p)
@@ -60,7 +60,7 @@ Real PeriodicMpm1D::timeStep(Real number) const
 
 void PeriodicMpm1D::solveMass(std::vector<Real>& rhs) const
 {
-    if (setup_.mass == MassKind::lumped)
+    if (setup_.mass == MassMatrix::lumped)
     {
         for (int I = 0; I < cells_; ++I) rhs[I] /= lumpedMass_[I];
         return;

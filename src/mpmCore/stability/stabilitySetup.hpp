@@ -8,6 +8,7 @@
 #pragma once
 #include "../types.hpp"
 #include "../shapeFunctions/shapeFunctions.hpp"
+#include "../step/stepOptions.hpp"
 #include <complex>
 #include <string>
 #include <vector>
@@ -19,18 +20,18 @@ using Complex = std::complex<Real>;
 
 // diffusion: rho Dv/Dt = d/dx(nu dv/dx), parameter Fo = nu dt/(rho h^2)
 // wave:      rho v' = d sigma/dx, sigma' = E dv/dx, parameter CFL = c dt/h
+// The mass matrix and the stress-update order are the step's own
+// (step/stepOptions.hpp); the order matters to the wave model only (the
+// diffusion model's stress is an instantaneous function of the P2G grid
+// velocity).
 enum class Model { diffusion, wave };
-enum class MassKind { lumped, consistent };
-// Stress-update order of the wave model (ignored by the diffusion model,
-// whose stress is an instantaneous function of the P2G grid velocity).
-enum class StressUpdate { USL, USF, MUSL };
 
 struct AnalysisSetup   // (not "Setup": GoogleTest reserves Test::Setup)
 {
     Model model = Model::diffusion;
     ShapeKind shape = ShapeKind::linearHat;
     Real alpha = 0.0;                      // FLIP fraction: 0 = PIC, 1 = FLIP
-    MassKind mass = MassKind::lumped;
+    MassMatrix mass = MassMatrix::lumped;
     StressUpdate scheme = StressUpdate::USL;
     std::vector<Real> offsets{0.5};        // point offsets per cell, lattice units
 
@@ -53,11 +54,7 @@ struct ComplexMatrix
 };
 
 const char* modelName(Model);
-const char* massName(MassKind);
-const char* schemeName(StressUpdate);
 bool parseModel(const std::string&, Model&);
-bool parseMass(const std::string&, MassKind&);
-bool parseScheme(const std::string&, StressUpdate&);
 // Short label such as "CBS" used in tables and CSV files.
 const char* shapeShortName(ShapeKind);
 // One-line description: "diffusion LH alpha=0 lumped offsets=0.5".

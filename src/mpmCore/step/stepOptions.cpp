@@ -1,54 +1,31 @@
 #include "stepOptions.hpp"
+#include "../common/enumTable.hpp"
 
 namespace mpm {
 
-const char* massMatrixName(MassMatrix m)
+namespace
 {
-    return m == MassMatrix::consistent ? "consistent" : "lumped";
+const auto massMatrices = enumTable<MassMatrix>({{MassMatrix::lumped, "lumped"}, {MassMatrix::consistent, "consistent"}});
+const auto stressUpdates = enumTable<StressUpdate>
+({{StressUpdate::USF, "USF"}, {StressUpdate::USL, "USL"}, {StressUpdate::MUSL, "MUSL"}});
+// picFlip and apic: accepted aliases
+const auto transfers = enumTable<Transfer>
+({{Transfer::picFlip, "PICFLIP"}, {Transfer::apic, "APIC"}, {Transfer::picFlip, "picFlip"}, {Transfer::apic, "apic"}});
+const std::string massMatrixList = massMatrices.validNames();
+const std::string stressUpdateList = stressUpdates.validNames();
+const std::string transferList = transfers.validNames();
 }
 
-bool parseMassMatrix(const std::string& name, MassMatrix& m)
-{
-    if (name == "lumped") { m = MassMatrix::lumped; return true; }
-    if (name == "consistent") { m = MassMatrix::consistent; return true; }
-    return false;
-}
+const char* massMatrixName(MassMatrix m) { return massMatrices.name(m); }
+bool parseMassMatrix(const std::string& name, MassMatrix& m) { return massMatrices.parse(name, m); }
+const char* validMassMatrixNames() { return massMatrixList.c_str(); }
 
-const char* validMassMatrixNames() { return "lumped consistent"; }
+const char* stressUpdateName(StressUpdate s) { return stressUpdates.name(s); }
+bool parseStressUpdate(const std::string& name, StressUpdate& s) { return stressUpdates.parse(name, s); }
+const char* validStressUpdateNames() { return stressUpdateList.c_str(); }
 
-const char* stressUpdateName(StressUpdate s)
-{
-    switch (s)
-    {
-        case StressUpdate::USF: return "USF";
-        case StressUpdate::USL: return "USL";
-        default: return "MUSL";
-    }
-}
-
-bool parseStressUpdate(const std::string& name, StressUpdate& s)
-{
-    for (auto c : {StressUpdate::USF, StressUpdate::USL, StressUpdate::MUSL})
-    {
-        if (name == stressUpdateName(c)) { s = c; return true; }
-    }
-    return false;
-}
-
-const char* validStressUpdateNames() { return "USF USL MUSL"; }
-
-const char* transferName(Transfer t)
-{
-    return t == Transfer::apic ? "APIC" : "PICFLIP";
-}
-
-bool parseTransfer(const std::string& name, Transfer& t)
-{
-    if (name == "PICFLIP" || name == "picFlip") { t = Transfer::picFlip; return true; }
-    if (name == "APIC" || name == "apic") { t = Transfer::apic; return true; }
-    return false;
-}
-
-const char* validTransferNames() { return "PICFLIP APIC"; }
+const char* transferName(Transfer t) { return transfers.name(t); }
+bool parseTransfer(const std::string& name, Transfer& t) { return transfers.parse(name, t); }
+const char* validTransferNames() { return transferList.c_str(); }
 
 } // namespace mpm

@@ -9,11 +9,8 @@ mpm::stability::AnalysisSetup Foam::analysedStep(const mpm::StepOptions& o)
     st::AnalysisSetup s;
     s.shape = o.shape;
     s.alpha = o.flipRatio;
-    s.mass = st::MassKind::lumped;
-    s.scheme =
-        o.stressUpdate == mpm::StressUpdate::USF ? st::StressUpdate::USF
-      : o.stressUpdate == mpm::StressUpdate::MUSL ? st::StressUpdate::MUSL
-      : st::StressUpdate::USL;
+    s.mass = mpm::MassMatrix::lumped;
+    s.scheme = o.stressUpdate;
     s.offsets = {0};
     return s;
 }
@@ -52,7 +49,7 @@ Foam::stableCourant Foam::analysedCourantLimit(const mpm::StepOptions& o)
 
     std::ostringstream d;
     d   << "1D wave, " << mpm::shapeName(o.shape) << ", "
-        << st::schemeName(s.scheme) << ", flipRatio " << o.flipRatio
+        << st::stressUpdateName(s.scheme) << ", flipRatio " << o.flipRatio
         << ", lumped mass, worst of " << nShift << " point offsets";
     result.description = d.str();
     return result;
