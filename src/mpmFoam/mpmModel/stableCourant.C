@@ -49,7 +49,7 @@ Foam::stableCourant Foam::analysedCourantLimit(const mpm::StepOptions& o)
 
     std::ostringstream d;
     d   << "1D wave, " << mpm::shapeName(o.shape) << ", "
-        << st::stressUpdateName(s.scheme) << ", flipRatio " << o.flipRatio
+        << mpm::stressUpdateName(s.scheme) << ", flipRatio " << o.flipRatio
         << ", lumped mass, worst of " << nShift << " point offsets";
     result.description = d.str();
     return result;
