@@ -185,6 +185,12 @@ OMP_NUM_THREADS=2 runPar "$hybrid" 2
 runPar "$single" 2
 grep -q "OpenMP threads: 2 per processor" "$hybrid/log.mpmFoam" \
     || { echo "FAIL: the hybrid run did not use 2 threads"; failures=$((failures + 1)); }
+# The cost breakdown prints the halo's time under the phase it is part of
+# (the nodal update: the halo sums and copies), never under another
+# (issue 28: it once stood under "constitutive")
+haloAfter=$(awk '/Cost breakdown/{on=1} on && /of which halo/{print prev; exit} on{prev=$1" "$2}' "$single/log.mpmFoam")
+[ "$haloAfter" = "nodal update" ] && n=1 || n=0
+check "the cost breakdown's halo line stands under the nodal update (found under: ${haloAfter:-none})" "n == 1" n="$n"
 out=$(compare "$single" "$hybrid" "$tEnd" --fields U stress F)
 worst=$(echo "$out" | awk 'NR>2{if($2>m)m=$2}END{print m+0}')
 check "MPI+OpenMP (2 ranks x 2 threads) equals 2 ranks x 1 thread bitwise" "worst == 0" worst="${worst:-1}"

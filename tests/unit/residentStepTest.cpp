@@ -228,6 +228,25 @@ TEST(StepPlan, OrderPerStressUpdate)
                                           "nodalAfterRemap gradientFromNew stress move migrate");
 }
 
+// runPlan books the halo time a phase spends (decomposed runs) to that
+// phase's category: the cost breakdown prints it under the right phase
+TEST(StepPlan, HaloTimeBookedToItsPhase)
+{
+    StepOptions o;
+    o.stressUpdate = StressUpdate::USF;
+    StepTimers t;
+    runPlan(makeStepPlan(o), t, [&](Phase p)
+    {
+        if (p == Phase::nodalUpdate) t.halo += 2;
+        if (p == Phase::foldForce) t.halo += 1;
+        if (p == Phase::scatter) t.halo += 0.5;
+    });
+    EXPECT_EQ(t.haloIn.nodal, 3);
+    EXPECT_EQ(t.haloIn.p2g, 0.5);
+    EXPECT_EQ(t.haloIn.constitutive, 0);
+    EXPECT_EQ(t.haloIn.g2p, 0);
+}
+
 // Every back-end of this machine issues the plan's phases, in its order,
 // for every option that shapes the plan (and those that do not)
 TEST(StepPlan, EveryBackEndRunsThePlan)

@@ -44,6 +44,15 @@ double& phaseTimer(StepTimers& t, Phase p)
     return t.g2p;
 }
 
+double& haloTimer(StepTimers& t, Phase p)
+{
+    const double* phase = &phaseTimer(t, p);
+    if (phase == &t.p2g) return t.haloIn.p2g;
+    if (phase == &t.nodal) return t.haloIn.nodal;
+    if (phase == &t.constitutive) return t.haloIn.constitutive;
+    return t.haloIn.g2p;   // g2p, and migration (no halo)
+}
+
 StepPlan makeStepPlan(const StepOptions& options)
 {
     StepPlan plan;

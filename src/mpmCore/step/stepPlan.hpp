@@ -43,8 +43,10 @@ enum class Phase
 
 const char* phaseName(Phase p);
 
-// The timer a phase's time adds to (StepTimers' categories)
+// The timer a phase's time adds to (StepTimers' categories), and the one
+// its halo time adds to (StepTimers::haloIn)
 double& phaseTimer(StepTimers& t, Phase p);
+double& haloTimer(StepTimers& t, Phase p);
 
 struct StepPlan
 {
@@ -66,8 +68,12 @@ void runPlan(const StepPlan& plan, StepTimers& timers, Launcher&& launcher, std:
     for (const Phase p : plan.phases)
     {
         if (record) record->push_back(p);
-        ScopedTimer t(phaseTimer(timers, p));
-        launcher(p);
+        const double halo0 = timers.halo;
+        {
+            ScopedTimer t(phaseTimer(timers, p));
+            launcher(p);
+        }
+        if (timers.halo != halo0) haloTimer(timers, p) += timers.halo - halo0;
     }
 }
 

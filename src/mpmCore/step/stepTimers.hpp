@@ -11,9 +11,11 @@ struct StepTimers
     double g2p = 0;           // grid-to-particle gather + position update
     double constitutive = 0;  // deformation gradient + stress update
     double migration = 0;     // decomposed runs: points to their new owners
-    // Decomposed runs: halo sums and copies, already inside p2g/nodal (a
-    // share of them, not a phase of its own).
+    // Decomposed runs: halo sums and copies, already inside the phases (a
+    // share of them, not a phase of its own), in all and per phase
+    // category (runPlan books each phase's share to its category)
     double halo = 0;
+    struct { double p2g = 0, nodal = 0, g2p = 0, constitutive = 0; } haloIn;
 
     double total() const { return p2g + nodal + g2p + constitutive + migration; }
 };

@@ -572,7 +572,8 @@ void Foam::mpmModel::summary
 {
     // The slowest rank's time of each phase: what the run waited for.
     mpm::StepTimers t = system_.timers();
-    for (double* x : {&t.p2g, &t.nodal, &t.g2p, &t.constitutive, &t.migration, &t.halo})
+    for (double* x : {&t.p2g, &t.nodal, &t.g2p, &t.constitutive, &t.migration, &t.halo,
+                      &t.haloIn.p2g, &t.haloIn.nodal, &t.haloIn.g2p, &t.haloIn.constitutive})
     {
         reduce(*x, maxOp<double>());
     }
@@ -605,15 +606,18 @@ void Foam::mpmModel::summary
     }
     if (Pstream::parRun()) os << ", " << Pstream::nProcs() << " processors";
     os  << nl << "  Cost breakdown:" << nl;
-    line("P2G          ", t.p2g);
-    line("nodal update ", t.nodal);
-    line("G2P          ", t.g2p);
-    line("constitutive ", t.constitutive);
-    if (Pstream::parRun())
+    // Decomposed: each phase's halo time (its waits for the other ranks
+    // included) under the phase it is part of
+    auto phase = [&](const std::string& name, scalar s, scalar halo)
     {
-        line("  of which halo", t.halo);
-        line("migration    ", t.migration);
-    }
+        line(name, s);
+        if (Pstream::parRun() && halo > 0) line("  of which halo", halo);
+    };
+    phase("P2G          ", t.p2g, t.haloIn.p2g);
+    phase("nodal update ", t.nodal, t.haloIn.nodal);
+    phase("G2P          ", t.g2p, t.haloIn.g2p);
+    phase("constitutive ", t.constitutive, t.haloIn.constitutive);
+    if (Pstream::parRun()) line("migration    ", t.migration);
     line("I/O          ", io);
     for (const auto& e : named) line(e.first(), e.second());
     // 3D without APIC: which P2G loop the first steps' timing chose (this
