@@ -1,4 +1,5 @@
 #include "mpmFoamModule.H"
+#include <sstream>
 #include "addToRunTimeSelectionTable.H"
 #include "clockTime.H"
 #include "choice.H"
@@ -52,10 +53,40 @@ void Foam::mpmFoamModule::printProgress() const
     const scalar t1 = runTime.endTime().value();
     const scalar done = min(max((runTime.value() - t0)/max(t1 - t0, VSMALL), 0), 1);
     const scalar wall = wallClock_.elapsedTime();
+    // The time left from the recent rate, not from the whole run's: the
+    // first progress interval carries the start-up (first touches, the P2G
+    // loop's trials), and a run's rate drifts as its material spreads or
+    // settles. The rate over the last quarter of the intervals (at least
+    // one, never the first while others exist) gives the estimate; its
+    // difference from the last interval's alone says how sure it is.
+    progress_.emplace_back(wall, done);
+    if (progress_.size() > 64) progress_.pop_front();
+    const label n = label(progress_.size());
+    auto rate = [&](label from)
+    {
+        const scalar dw = progress_.back().first - progress_[from].first;
+        return dw > 0 ? (progress_.back().second - progress_[from].second)/dw : scalar(0);
+    };
+    scalar r = wall > 0 ? done/wall : 0;   // the first line: all there is
+    std::ostringstream how;
+    if (n < 2) how << "from the run so far";
+    if (n >= 3)
+    {
+        const label from = max(label(1), n - 1 - max(label(1), (n - 1)/4));
+        r = rate(from);
+        const scalar last = rate(n - 2);
+        how << "rate of the last " << std::round(10*(wall - progress_[from].first))/10
+            << " s, +-" << std::round(r > 0 ? 100*mag(last - r)/r : 0) << " %";
+    }
+    else if (n == 2)
+    {
+        r = rate(0);
+        how << "from one interval, rough";
+    }
     Info<< "Progress: time " << runTime.timeName() << " of " << t1 << ", "
         << std::round(1000*done)/10 << " % done, wall time "
         << std::round(10*wall)/10 << " s, about "
-        << std::round(done > 0 ? 10*wall*(1 - done)/done : 0)/10 << " s left" << nl;
+        << std::round(r > 0 ? 10*(1 - done)/r : 0)/10 << " s left (" << how.str().c_str() << ")" << nl;
 }
 
 Foam::scalar Foam::mpmFoamModule::maxDeltaT() const
