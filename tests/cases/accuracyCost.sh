@@ -161,4 +161,26 @@ expectFailure "unknown keyword in the sweep dictionary" "unknown keyword 'paramt
 sed 's/name    "vcm error";/name "vcm error"; compare nearest;/' "$sweep" > "$SCRATCH/bad2"
 expectFailure "bad compare choice" "compare nearest; \}: valid choices: none reference value" \
     mpmAccuracyCost "$c" --sweep "$SCRATCH/bad2"
+
+# 7. The plot's error axis names the error, not the quantity, when the error
+# is the quantity's difference from a reference (issue 28: it read "Ucm_x
+# at t = 0.3 s"); with compare none the quantity is the error
+labels=$("$PY" - "$(command -v mpmAccuracyCost)" <<'PYEOF'
+import importlib.machinery, importlib.util, sys
+loader = importlib.machinery.SourceFileLoader("mpmAccuracyCostTool", sys.argv[1])
+spec = importlib.util.spec_from_loader(loader.name, loader)
+tool = importlib.util.module_from_spec(spec)
+loader.exec_module(tool)
+q = "Ucm_x at t = 0.3 s"
+print(tool.error_label({"compare": "reference"}, q))
+print(tool.error_label({"compare": "value", "value": "2.4"}, q))
+print(tool.error_label({"compare": "none"}, "vcm error"))
+PYEOF
+)
+echo "$labels"
+expected='|q - q_ref| / |q_ref| (reference run),  q = Ucm_x at t = 0.3 s
+|q - 2.4| / |2.4|,  q = Ucm_x at t = 0.3 s
+vcm error'
+[ "$labels" = "$expected" ] && n=1 || n=0
+check "the error axis names the relative error against a reference or value, the quantity only with compare none" "n == 1" n="$n"
 finish
