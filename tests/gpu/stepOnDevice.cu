@@ -102,14 +102,8 @@ void build(MpmSystem& s, const Case& c, Backend backend)
         // K = beta V_cell per node, a fluid at rest: the drag slows the
         // block within the run (relaxation time m/K ~ 0.02 s per node)
         FluidCoupling& f = s.coupling();
-        const Index n = s.lattice().nNodes;
-        f.K.assign(n, 0.06);
-        for (int d = 0; d < 3; ++d)
-        {
-            f.U[d].assign(n, 0.0);
-            f.F[d].assign(n, 0.0);
-            f.velocityIntegral[d].assign(n, 0.0);
-        }
+        f.resize(s.lattice().nNodes);
+        std::fill(f.K.begin(), f.K.end(), 0.06);
     }
     if (c.obstacle)
     {

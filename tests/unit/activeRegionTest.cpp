@@ -77,12 +77,8 @@ Result run(const Variant& v, bool sparse)
     {
         auto& c = s.coupling();
         const Index n = s.lattice().nNodes;
-        c.K.assign(n, 0.0);
-        for (int d = 0; d < 3; ++d)
-        {
-            c.U[d].assign(n, 0.0); c.F[d].assign(n, 0.0);
-            c.velocityIntegral[d].assign(n, 0.0); c.fluidAcceleration[d].assign(n, 0.0);
-        }
+        c.resize(n);
+        for (auto& a : c.fluidAcceleration) a.assign(n, 0.0);
         for (Index I = 0; I < n; ++I)
         {
             c.K[I] = 0.5 + 0.001*Real(I % 97);

@@ -27,15 +27,7 @@ void uniformSuspension(MpmSystem& s, int n, const StepOptions& o, Real alphaS, R
     {
         s.particles().add({(i + 0.5)*h/2, (j + 0.5)*h/2, (k + 0.5)*h/2}, {0, 0, 0}, rhoS*vol, vol, 0);
     }
-    auto& c = s.coupling();
-    const Index nNodes = s.lattice().nNodes;
-    c.K.assign(nNodes, 0.0);
-    for (int d = 0; d < 3; ++d)
-    {
-        c.U[d].assign(nNodes, 0.0);
-        c.F[d].assign(nNodes, 0.0);
-        c.velocityIntegral[d].assign(nNodes, 0.0);
-    }
+    s.coupling().resize(s.lattice().nNodes);
 }
 
 } // namespace

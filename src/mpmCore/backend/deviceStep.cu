@@ -30,20 +30,7 @@ using bodies::dispatchKD;
 using bodies::pick;
 using cuda::AtomicAdd;
 
-// The first bad point (lowest index) and the inverted count, reduced with
-// atomics into two device integers
-struct StressBody
-{
-    PointView P; const LawParams* laws; Real dt;
-    unsigned long long* firstBad; unsigned long long* inverted;
-    __device__ void operator()(Index p) const
-    {
-        const StressPointStatus r = stressPoint(P, laws, dt, p);
-        if (r == StressPointStatus::bad) atomicMin(firstBad, (unsigned long long)p);
-        else if (r == StressPointStatus::inverted) atomicAdd(inverted, 1ull);
-    }
-};
-
+// The advance: per point its MoveFlags, and the number flagged
 struct MoveBody
 {
     Lattice L; PointView P; bool periodic[3]; bool frozen;
@@ -341,7 +328,7 @@ DeviceStep::StressResult DeviceStep::stress(Real dt)
     Impl& m = *impl_;
     const Index n = m.P.n;
     m.resetCounters((unsigned long long)n);
-    StressBody body{m.P, m.laws.data(), dt, m.counters.data(), m.counters.data() + 1};
+    bodies::Stress<cuda::Atomics> body{m.P, m.laws.data(), dt, m.counters.data(), m.counters.data() + 1};
     forEachOnDevice(n, body, "the stress update kernel");
     unsigned long long c[2];
     m.counters.download(c, 2);

@@ -7,6 +7,7 @@
 // capturing views and lattices by value: they hold raw device pointers.
 #pragma once
 #include "cudaCheck.cuh"
+#include "../common/hostDevice.hpp"
 #include "../types.hpp"
 
 namespace mpm::cuda {
@@ -30,6 +31,46 @@ void forEachOnDevice(Index n, Body body, const char* name)
     forEachKernel<<<unsigned(blocks), threadsPerBlock>>>(n, body);
     cudaCheckLaunch(name);
 }
+
+// The atomic reductions of the kernel bodies (backend/pointBodies.hpp,
+// residentStepImpl.hpp), callable from MPM_HOST_DEVICE bodies; only the
+// device side ever runs
+struct Atomics
+{
+    MPM_HOST_DEVICE static void add(Real* a, Real x)
+    {
+#ifdef __CUDA_ARCH__
+        atomicAdd(a, x);
+#else
+        *a += x;
+#endif
+    }
+    MPM_HOST_DEVICE static void min(unsigned long long* a, unsigned long long x)
+    {
+#ifdef __CUDA_ARCH__
+        atomicMin(a, x);
+#else
+        if (x < *a) *a = x;
+#endif
+    }
+    // x >= 0: a double's bits order as the integers do
+    MPM_HOST_DEVICE static void max(unsigned long long* a, Real x)
+    {
+#ifdef __CUDA_ARCH__
+        atomicMax(a, (unsigned long long)__double_as_longlong(x));
+#else
+        (void)a; (void)x;
+#endif
+    }
+    MPM_HOST_DEVICE static void count(unsigned long long* a)
+    {
+#ifdef __CUDA_ARCH__
+        atomicAdd(a, 1ull);
+#else
+        ++*a;
+#endif
+    }
+};
 
 // P2G's add on the device: concurrent points share nodes. Points stored in
 // block or stencil order keep a warp's atomics on a few cache lines.

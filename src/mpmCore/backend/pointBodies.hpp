@@ -7,6 +7,7 @@
 #pragma once
 #include "../kernels/g2p.hpp"
 #include "../kernels/p2g.hpp"
+#include "../kernels/stressPoint.hpp"
 #include <type_traits>
 
 namespace mpm::bodies {
@@ -37,6 +38,22 @@ struct Gradient
     {
         const Real* const w[3] = {v[0], v[1], v[2]};
         gradientPoint<K, D>(L, P, w, p);
+    }
+};
+
+// The stress update, reducing the lowest index of a point that went
+// non-finite (atomic min) and the number of inverted points (count) with
+// the launcher's Atomics (min, count)
+template<class Atomics>
+struct Stress
+{
+    PointView P; const LawParams* laws; Real dt;
+    unsigned long long* firstBad; unsigned long long* inverted;
+    MPM_HOST_DEVICE void operator()(Index p) const
+    {
+        const StressPointStatus r = stressPoint(P, laws, dt, p);
+        if (r == StressPointStatus::bad) Atomics::min(firstBad, (unsigned long long)p);
+        else if (r == StressPointStatus::inverted) Atomics::count(inverted);
     }
 };
 

@@ -61,7 +61,8 @@ struct WarpReducedAdd
     }
 };
 
-struct CudaExec
+// The atomics (add, min, max, count) are cuda::Atomics'
+struct CudaExec : cuda::Atomics
 {
     template<bool Warp> using P2gAdd = std::conditional_t<Warp, WarpReducedAdd, cuda::AtomicAdd>;
 
@@ -79,44 +80,9 @@ struct CudaExec
     {
         if (n) cuda::cudaCheck(cudaMemsetAsync(d, 0, n*sizeof(Real)), "cudaMemsetAsync of a resident grid array");
     }
-
     template<class Body>
     static void forEach(Index n, const Body& body, const char* name) { cuda::forEachOnDevice(n, body, name); }
 
-    // Called from MPM_HOST_DEVICE bodies; only the device side ever runs
-    MPM_HOST_DEVICE static void add(Real* a, Real x)
-    {
-#ifdef __CUDA_ARCH__
-        atomicAdd(a, x);
-#else
-        *a += x;
-#endif
-    }
-    MPM_HOST_DEVICE static void min(unsigned long long* a, unsigned long long x)
-    {
-#ifdef __CUDA_ARCH__
-        atomicMin(a, x);
-#else
-        if (x < *a) *a = x;
-#endif
-    }
-    // x >= 0: a double's bits order as the integers do
-    MPM_HOST_DEVICE static void max(unsigned long long* a, Real x)
-    {
-#ifdef __CUDA_ARCH__
-        atomicMax(a, (unsigned long long)__double_as_longlong(x));
-#else
-        (void)a; (void)x;
-#endif
-    }
-    MPM_HOST_DEVICE static void count(unsigned long long* a)
-    {
-#ifdef __CUDA_ARCH__
-        atomicAdd(a, 1ull);
-#else
-        ++*a;
-#endif
-    }
 };
 
 } // namespace

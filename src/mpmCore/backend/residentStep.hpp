@@ -86,8 +86,6 @@ public:
     virtual ResidentResult step(Real dt, Real massTolerance, StepTimers& timers, std::vector<Phase>* record) = 0;
     // max over the points of signalSpeedPoint (kernels/signalSpeed.hpp)
     virtual Real maxSignalSpeed() = 0;
-    // The grid's mass and velocity, for checks (whole arrays, nNodes each)
-    virtual void downloadGrid(std::vector<Real>& mass, std::array<std::vector<Real>, 3>& velocity) = 0;
 };
 
 // The host stand-in (always available)

@@ -73,18 +73,6 @@ struct FrictionView
 // order is the integers')
 enum Counter { firstBadStress, firstBadMove, invertedPoints, beyondWall, containedPoints, signalSpeed, nCounters };
 
-template<class Exec>
-struct Stress
-{
-    PointView P; const LawParams* laws; Real dt; unsigned long long* c;
-    MPM_HOST_DEVICE void operator()(Index p) const
-    {
-        const StressPointStatus r = stressPoint(P, laws, dt, p);
-        if (r == StressPointStatus::bad) Exec::min(c + firstBadStress, (unsigned long long)p);
-        else if (r == StressPointStatus::inverted) Exec::count(c + invertedPoints);
-    }
-};
-
 // The advance; a point beyond a box face keeps its unclamped position and
 // its flag for the host (MpmSystem), then level-set containment
 template<class Exec>
@@ -430,18 +418,6 @@ public:
         flags_.download(flags.data(), flags.size());
     }
 
-    void downloadGrid(std::vector<Real>& mass, std::array<std::vector<Real>, 3>& velocity) override
-    {
-        const std::size_t n = std::size_t(g_.n);
-        mass.resize(n);
-        Exec::copyToHost(mass.data(), g_.mass, n);
-        for (int d = 0; d < 3; ++d)
-        {
-            velocity[d].resize(n);
-            Exec::copyToHost(velocity[d].data(), g_.velocity[d], n);
-        }
-    }
-
     ResidentResult step(Real dt, Real tol, StepTimers& timers, std::vector<Phase>* record) override
     {
         const Index n = P_.n;
@@ -503,7 +479,8 @@ private:
             case Phase::gradientFromOld: gradient<K, D>(g_.velocityOld); break;
             case Phase::stress:
             {
-                Stress<Exec> s{P_, laws_.data(), dt, counters_.data()};
+                bodies::Stress<Exec> s{P_, laws_.data(), dt, counters_.data() + firstBadStress,
+                                       counters_.data() + invertedPoints};
                 Exec::forEach(P_.n, s, "the stress update kernel");
                 break;
             }

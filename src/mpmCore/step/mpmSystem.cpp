@@ -404,6 +404,17 @@ void MpmSystem::massToVelocity(std::array<std::vector<Real>, 3>& v)
     else solveMass<K, D>(grid_.momentum, v);
 }
 
+void FluidCoupling::resize(Index nNodes)
+{
+    K.assign(std::size_t(nNodes), 0.0);
+    for (int d = 0; d < 3; ++d)
+    {
+        U[d].assign(std::size_t(nNodes), 0.0);
+        F[d].assign(std::size_t(nNodes), 0.0);
+        velocityIntegral[d].assign(std::size_t(nNodes), 0.0);
+    }
+}
+
 void FluidCoupling::resetIntegral()
 {
     for (auto& a : velocityIntegral) std::fill(a.begin(), a.end(), 0.0);

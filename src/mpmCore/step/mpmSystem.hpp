@@ -78,6 +78,9 @@ struct FluidCoupling
     bool active() const { return !K.empty(); }
 #endif
     void resetIntegral();
+    // Sizes the arrays to nNodes padded nodes, all zero (no drag, force or
+    // fluid velocity yet); the added mass stays off, its array empty
+    void resize(Index nNodes);
 };
 
 class MpmSystem

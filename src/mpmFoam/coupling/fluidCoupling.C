@@ -102,14 +102,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
 
     // Coupling arrays on the padded lattice; zero on ghosts.
     auto& c = mpm_.system().coupling();
-    const label nNodes = label(mpm_.system().lattice().nNodes);
-    c.K.assign(nNodes, 0.0);
-    for (int k = 0; k < 3; ++k)
-    {
-        c.U[k].assign(nNodes, 0.0);
-        c.F[k].assign(nNodes, 0.0);
-        c.velocityIntegral[k].assign(nNodes, 0.0);
-    }
+    c.resize(mpm_.system().lattice().nNodes);
     c.addedMassDensity = 0;
     // Grains are incompressible: alpha.solid counts their volume m/rho.
     mpm_.system().setConstantGrainVolume(true);
