@@ -193,4 +193,34 @@ expectFailure "a fixed step above Courant 1 is warned about first" "The MPM step
 bad=$(grep -rliE "\bnan\b|\binf\b" "$c"/[0-9]*/lagrangian "$c"/[0-9]*/*.solid 2>/dev/null | head -3)
 if [ -z "$bad" ]; then echo "PASS: no NaN/inf written"; else echo "FAIL: NaN written in $bad"; failures=$((failures + 1)); fi
 
+
+# Decomposed (2 ranks): an input error is printed once, as a serial run
+# prints it, with the file and its lines (the master's copy); no rank's copy
+# with "[1]" in front, none naming "IOstream" for a file (errorsOnce.H)
+expectOncePar()
+{
+    local what="$1" pattern="$2"; shift 2
+    local out rc copies
+    out="$("$@" 2>&1)"; rc=$?
+    copies=$(echo "$out" | grep -cE -- "$pattern")
+    if [ $rc -eq 0 ]; then
+        echo "FAIL: $what: succeeded, expected an error"; failures=$((failures + 1))
+    elif [ "$copies" -ne 1 ] || echo "$out" | grep -qE "^\[[0-9]+\]|IOstream"; then
+        echo "FAIL: $what: printed $copies times, or by rank"; echo "$out" | tail -30; failures=$((failures + 1))
+    elif ! echo "$out" | grep -qE "^file: .*constant/mpmProperties.materials.bar from line [0-9]+ to line [0-9]+"; then
+        echo "FAIL: $what: no file and lines"; echo "$out" | tail -30; failures=$((failures + 1))
+    else
+        echo "PASS: $what: once, $(echo "$out" | grep -E -m1 "^file: " | sed 's/^ *//')"
+    fi
+}
+c=$(freshCopy decomposedError)
+decomposeCase "$c" 2 scotch
+sed -i 's/model   linearElastic;/model   linearElastik;/' "$(props "$c")"
+expectOncePar "decomposed mpmFoam: the error once" "Unknown model 'linearElastik'" \
+    runIn "$c" mpirun -np 2 mpmFoam -parallel
+expectOncePar "decomposed foamRun -solver mpmFoam: the error once" "Unknown model 'linearElastik'" \
+    runIn "$c" mpirun -np 2 foamRun -solver mpmFoam -parallel
+expectOncePar "mpmSetParticles -parallel: the error once" "Unknown model 'linearElastik'" \
+    runIn "$c" mpirun -np 2 mpmSetParticles -parallel -overwrite
+
 finish

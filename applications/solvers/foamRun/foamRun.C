@@ -21,6 +21,7 @@ Usage
 #include "fvMesh.H"
 #include "columnFvMesh.H"   // createMesh.H needs it (-dry-run)
 #include "solverModule.H"
+#include "errorsOnce.H"
 
 using namespace Foam;
 
@@ -62,8 +63,12 @@ int main(int argc, char *argv[])
 
     #include "createMesh.H"
 
-    autoPtr<solverModule> module(solverModule::New(solverName, mesh));
-    runSolverModule(runTime, module());
+    // An input error is printed once in a decomposed run (errorsOnce.H)
+    reportErrorsOnce([&]()
+    {
+        autoPtr<solverModule> module(solverModule::New(solverName, mesh));
+        runSolverModule(runTime, module());
+    });
 
     Info<< "End\n" << endl;
     return 0;

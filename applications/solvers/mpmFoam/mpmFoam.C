@@ -26,6 +26,7 @@ Description
 
 #include "fvCFD.H"
 #include "mpmFoamModule.H"
+#include "errorsOnce.H"
 
 int main(int argc, char *argv[])
 {
@@ -49,9 +50,13 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
 
     // Constructed directly (no selection): this application links
-    // libmpmFoam, and its log stays that of mpmFoam
-    mpmFoamModule module(mesh);
-    runSolverModule(runTime, module);
+    // libmpmFoam, and its log stays that of mpmFoam. An input error is
+    // printed once in a decomposed run (errorsOnce.H)
+    reportErrorsOnce([&]()
+    {
+        mpmFoamModule module(mesh);
+        runSolverModule(runTime, module);
+    });
 
     Info<< "End\n" << endl;
     return 0;

@@ -23,6 +23,7 @@ Description
 #include "knownKeywords.H"
 #include "completeTimes.H"
 #include "obstacles.H"
+#include "errorsOnce.H"
 
 int main(int argc, char *argv[])
 {
@@ -37,109 +38,113 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    // startFrom latestTime (as the tutorials) selects a run's last time:
-    // refuse to replace its points, unless asked to
+    // An input error is printed once in a decomposed run (errorsOnce.H)
+    reportErrorsOnce([&]()
     {
-        std::string results;
-        for (const word f : {"alpha.solid", "U.solid"})
+        // startFrom latestTime (as the tutorials) selects a run's last time:
+        // refuse to replace its points, unless asked to
         {
-            if (isFile(runTime.timePath()/f)) results += (results.empty() ? "" : " ") + f;
-        }
-        const scalar startTime =
-            runTime.controlDict().getOrDefault<scalar>("startTime", 0);
-        const bool later = runTime.value() > startTime + 0.5*runTime.deltaTValue();
-        if ((later || !results.empty()) && !args.found("overwrite"))
-        {
-            FatalErrorInFunction
-                << "Time " << runTime.timeName() << " holds the results of a"
-                << " run (" << (later ? "after controlDict startTime " : "")
-                << (later ? Foam::name(startTime) : word::null)
-                << (later && !results.empty() ? "; " : "")
-                << (results.empty() ? "" : "mpmFoam fields ")
-                << results.c_str() << "): seeding would replace its material points."
-                << nl << "To seed the start time, remove the later times"
-                << " (foamListTimes -rm) or set startFrom startTime; to"
-                << " replace this time's points, run mpmSetParticles"
-                << " -overwrite." << exit(FatalError);
-        }
-    }
-
-    const word dictName("mpmSetParticlesDict");
-    #include "setSystemMeshDictionaryIO.H"
-    const IOdictionary seedDict(dictIO);
-    checkKeywords(seedDict, {"regions"}, "mpmSetParticlesDict");
-
-    const IOdictionary mpmDict
-    (
-        IOobject("mpmProperties", runTime.constant(), mesh,
-            IOobject::MUST_READ, IOobject::NO_WRITE)
-    );
-    const materialLibrary materials(mpmDict, false);
-    const meshLattice lattice(mesh, mpmDict);
-    lattice.report(Info);
-    if (Pstream::parRun() && !lattice.cellsAreNodes())
-    {
-        FatalErrorInFunction
-            << "On a mesh that is not a uniform box, seed serially and then"
-            << " decomposePar: a point seeded here belongs to the processor of"
-            << " its lattice cell, which may not hold its mesh cell."
-            << exit(FatalError);
-    }
-
-    if (!seedDict.isDict("regions"))
-    {
-        FatalIOErrorInFunction(seedDict)
-            << "Missing sub-dictionary regions { name { type box; ... } }"
-            << exit(FatalIOError);
-    }
-    mpm::Particles points;
-    label nLocal = seedRegions(mesh, lattice, materials, seedDict.subDict("regions"), points);
-
-    // Points inside obstacles (level-set walls) are left out, counted
-    {
-        const std::vector<mpm::LevelSetWall> obstacles(readObstacles(mesh, mpmDict, false));
-        List<label> inside(obstacles.size(), Zero);
-        std::vector<mpm::Index> out;
-        for (label p = 0; p < nLocal; ++p)
-        {
-            const mpm::Real x[3] = {points.x[0][p], points.x[1][p], points.x[2][p]};
-            forAll(obstacles, w)
+            std::string results;
+            for (const word f : {"alpha.solid", "U.solid"})
             {
-                mpm::Real n[3];
-                if (obstacles[w].shape->distance(x, n, GREAT) < 0)
-                {
-                    ++inside[w];
-                    out.push_back(p);
-                    break;
-                }
+                if (isFile(runTime.timePath()/f)) results += (results.empty() ? "" : " ") + f;
+            }
+            const scalar startTime =
+                runTime.controlDict().getOrDefault<scalar>("startTime", 0);
+            const bool later = runTime.value() > startTime + 0.5*runTime.deltaTValue();
+            if ((later || !results.empty()) && !args.found("overwrite"))
+            {
+                FatalErrorInFunction
+                    << "Time " << runTime.timeName() << " holds the results of a"
+                    << " run (" << (later ? "after controlDict startTime " : "")
+                    << (later ? Foam::name(startTime) : word::null)
+                    << (later && !results.empty() ? "; " : "")
+                    << (results.empty() ? "" : "mpmFoam fields ")
+                    << results.c_str() << "): seeding would replace its material points."
+                    << nl << "To seed the start time, remove the later times"
+                    << " (foamListTimes -rm) or set startFrom startTime; to"
+                    << " replace this time's points, run mpmSetParticles"
+                    << " -overwrite." << exit(FatalError);
             }
         }
-        points.remove(out);
-        nLocal = points.size();
-        Pstream::listCombineGather(inside, plusEqOp<label>());
-        Pstream::listCombineScatter(inside);
-        forAll(obstacles, w)
-        {
-            Info<< "Obstacle " << obstacles[w].name.c_str() << ": left out "
-                << inside[w] << " points inside it" << nl;
-        }
-    }
-    const label n = returnReduce(nLocal, sumOp<label>());
-    if (n == 0)
-    {
-        FatalIOErrorInFunction(seedDict)
-            << "No material points were seeded: no region contains any "
-            << "sub-cell point" << exit(FatalIOError);
-    }
 
-    scalar mass = 0;
-    for (label p = 0; p < nLocal; ++p) mass += points.mass[p];
-    reduce(mass, sumOp<scalar>());
-    Info<< nl << "Writing " << n << " material points (total mass " << mass
-        << ") to " << runTime.timeName()/cloud::prefix/materialPointsCloudName
-        << nl << endl;
-    writeMaterialPoints(mesh, lattice, points, materials.names());
-    markTimeComplete(runTime);
+        const word dictName("mpmSetParticlesDict");
+        #include "setSystemMeshDictionaryIO.H"
+        const IOdictionary seedDict(dictIO);
+        checkKeywords(seedDict, {"regions"}, "mpmSetParticlesDict");
+
+        const IOdictionary mpmDict
+        (
+            IOobject("mpmProperties", runTime.constant(), mesh,
+                IOobject::MUST_READ, IOobject::NO_WRITE)
+        );
+        const materialLibrary materials(mpmDict, false);
+        const meshLattice lattice(mesh, mpmDict);
+        lattice.report(Info);
+        if (Pstream::parRun() && !lattice.cellsAreNodes())
+        {
+            FatalErrorInFunction
+                << "On a mesh that is not a uniform box, seed serially and then"
+                << " decomposePar: a point seeded here belongs to the processor of"
+                << " its lattice cell, which may not hold its mesh cell."
+                << exit(FatalError);
+        }
+
+        if (!seedDict.isDict("regions"))
+        {
+            FatalIOErrorInFunction(seedDict)
+                << "Missing sub-dictionary regions { name { type box; ... } }"
+                << exit(FatalIOError);
+        }
+        mpm::Particles points;
+        label nLocal = seedRegions(mesh, lattice, materials, seedDict.subDict("regions"), points);
+
+        // Points inside obstacles (level-set walls) are left out, counted
+        {
+            const std::vector<mpm::LevelSetWall> obstacles(readObstacles(mesh, mpmDict, false));
+            List<label> inside(obstacles.size(), Zero);
+            std::vector<mpm::Index> out;
+            for (label p = 0; p < nLocal; ++p)
+            {
+                const mpm::Real x[3] = {points.x[0][p], points.x[1][p], points.x[2][p]};
+                forAll(obstacles, w)
+                {
+                    mpm::Real n[3];
+                    if (obstacles[w].shape->distance(x, n, GREAT) < 0)
+                    {
+                        ++inside[w];
+                        out.push_back(p);
+                        break;
+                    }
+                }
+            }
+            points.remove(out);
+            nLocal = points.size();
+            Pstream::listCombineGather(inside, plusEqOp<label>());
+            Pstream::listCombineScatter(inside);
+            forAll(obstacles, w)
+            {
+                Info<< "Obstacle " << obstacles[w].name.c_str() << ": left out "
+                    << inside[w] << " points inside it" << nl;
+            }
+        }
+        const label n = returnReduce(nLocal, sumOp<label>());
+        if (n == 0)
+        {
+            FatalIOErrorInFunction(seedDict)
+                << "No material points were seeded: no region contains any "
+                << "sub-cell point" << exit(FatalIOError);
+        }
+
+        scalar mass = 0;
+        for (label p = 0; p < nLocal; ++p) mass += points.mass[p];
+        reduce(mass, sumOp<scalar>());
+        Info<< nl << "Writing " << n << " material points (total mass " << mass
+            << ") to " << runTime.timeName()/cloud::prefix/materialPointsCloudName
+            << nl << endl;
+        writeMaterialPoints(mesh, lattice, points, materials.names());
+        markTimeComplete(runTime);
+    });
 
     Info<< "End\n" << endl;
     return 0;
