@@ -183,4 +183,43 @@ expected='|q - q_ref| / |q_ref| (reference run),  q = Ucm_x at t = 0.3 s
 vcm error'
 [ "$labels" = "$expected" ] && n=1 || n=0
 check "the error axis names the relative error against a reference or value, the quantity only with compare none" "n == 1" n="$n"
+
+# 8. Issue 28 item 11: a reference run that is not converged is said to be
+#    so. Made-up sweeps along cells (25, 50, reference 100) of q = 1 + 10/cells
+#    (first order: the reference's own error, 0.1/1.1, equals the 50-cell
+#    run's error), q = 1 + 1e4/cells^4 (fourth order: 1e-4, well below the
+#    smallest error, 1.5e-3) and an oscillating sequence (cannot be checked)
+refCsv()
+{
+    cat > "$SCRATCH/ref_$1.csv" <<CSV
+# parameters: cells
+# error: made-up quantity
+# unstableAbove: 
+# refinement: cells
+# compare: reference (reference quantity $4)
+cells,reference,status,fragile,failure,quantity,error,solverTime
+25,0,ok,0,,$2,$("$PY" -c "print(abs($2 - $4)/$4)"),1
+50,0,ok,0,,$3,$("$PY" -c "print(abs($3 - $4)/$4)"),2
+100,1,ok,0,,$4,0,8
+CSV
+    mpmAccuracyCost --results "$SCRATCH/ref_$1.csv" 2>&1
+}
+out=$(refCsv first 1.4 1.2 1.1)
+echo "$out" | grep -E "WARNING|Reference run"
+echo "$out" | grep -qE "WARNING: the reference run is not converged in cells: its own relative error is about 9.09e-02 \(Richardson, observed order 1.00" \
+    && echo "PASS: a first-order reference one refinement beyond the runs: not converged, its error 0.0909 estimated" \
+    || { echo "FAIL: no 'not converged' warning for the first-order reference"; failures=$((failures + 1)); }
+out=$(refCsv fourth 1.0256 1.0016 1.0001)
+echo "$out" | grep -E "WARNING|Reference run"
+if echo "$out" | grep -qE "^  Reference run in cells: its own relative error is about 1.00e-04 \(Richardson, observed order 4.00" \
+   && ! echo "$out" | grep -q WARNING; then
+    echo "PASS: a fourth-order reference: converged (1e-4 against the smallest error 1.5e-3), no warning"
+else
+    echo "FAIL: the converged reference"; failures=$((failures + 1))
+fi
+out=$(refCsv oscillating 1.2 0.9 1.0)
+echo "$out" | grep -qE "WARNING: the reference run's convergence in cells cannot be established .*not a monotone convergence" \
+    && echo "PASS: an oscillating sequence: the reference's accuracy is said to be unknown" \
+    || { echo "FAIL: no warning for the oscillating sequence"; failures=$((failures + 1)); }
+
 finish
