@@ -1,19 +1,21 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
-# The coupled time-step advisor (adviseCoupledCase.py -> mpmStabilityAnalysis
-# --model coupled --advise) on the shipped fluidised bed: the drag's
-# relaxation time from the core's law equals Ergun's by hand (Gidaspow is
-# Ergun below alpha.fluid 0.8); the product's scheme is stable at the case's
-# step, packed and lifted; the old frozen-fluid scheme is unstable once the
-# bed is lifted (stress-free at aS 0.55), as observed before the fix; a case
-# whose blockMeshDict has no cell size asks for --h.
+# Parameter studies of the coupled analysis (adviseCoupledCase.py with an
+# override -> mpmStabilityAnalysis --model coupled --advise) on the shipped
+# fluidised bed: the drag's relaxation time from the core's law equals
+# Ergun's by hand (Gidaspow is Ergun below alpha.fluid 0.8); the product's
+# scheme is stable at the case's step, packed (--aS 0.6) and lifted; the old
+# frozen-fluid scheme is unstable once the bed is lifted (stress-free at aS
+# 0.55), as observed before the fix; a study says it is not the case's
+# advice (that is mpmAdviseTimeStep, tests/cases/coupledSolverAdvice.sh); a
+# study of a case whose blockMeshDict has no cell size asks for --h.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 tool="$MPMFOAM_BUILD/applications/tools/mpmStabilityAnalysis/mpmStabilityAnalysis"
 advise="$MPMFOAM_ROOT/applications/tools/mpmStabilityAnalysis/adviseCoupledCase.py"
 bed="$MPMFOAM_ROOT/tutorials/multiphase/fluidisedBed"
 
-packed=$("$PY" "$advise" "$bed" --tool "$tool")
+packed=$("$PY" "$advise" "$bed" --tool "$tool" --aS 0.6)
 echo "$packed"
 lifted=$("$PY" "$advise" "$bed" --tool "$tool" --stress-free --aS 0.55)
 echo "$lifted"
@@ -27,7 +29,14 @@ check "fluidised bed, lifted (aS 0.55, stress-free): the product's scheme is sta
     "g < 1" g="$(field "$lifted" "linearised (the product)")"
 check "fluidised bed, lifted: the old frozen-fluid scheme is not" "g > 1" g="$(field "$lifted" "frozen")"
 
+if echo "$packed" | grep -q "^adviseCoupledCase.py: a parameter study, not the case's advice (that is mpmAdviseTimeStep"; then
+    echo "PASS: a study says it is not the case's advice and names mpmAdviseTimeStep"
+else
+    echo "FAIL: a study does not say it is not the case's advice"; failures=$((failures + 1))
+fi
+
 c=$(copyTutorial multiphase/jetScour noCellSize)
-expectFailure "no cell size in blockMeshDict" "give the cell size with --h" "$PY" "$advise" "$c" --tool "$tool"
+expectFailure "a study, no cell size in blockMeshDict" "give the cell size with --h \(mpmAdviseTimeStep <case> reads it from the mesh\)" \
+    "$PY" "$advise" "$c" --tool "$tool" --aS 0.6
 
 finish

@@ -1,25 +1,42 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
-# The solver's start-up time-step advice (coupling { timeStepAdvice yes; },
-# src/mpmFoam/coupling/coupledTimeStepAdvice) prints the same lines as
-# mpmStabilityAnalysis --model coupled --advise run through
-# adviseCoupledCase.py on the same case: the drag's tau_p and Dt/tau_p, the
-# MPM wave speed, step, pure-MPM limit and margin, the sub-cycles, max |G| of
-# each drag variant and the largest stable fluid step. Both print the core's
-# adviceLines, so equal text means the solver hands the analysis the same
-# case as the script reads from the dictionaries: the drag law (WenYu, Ergun,
-# Gidaspow), the constitutive law (stress-free dilute, linearElastic,
-# druckerPrager), the solid fraction, h, the fluid, the step, courant, shape
-# and FLIP fraction (jetScour: 0.95 changes the pure-MPM limit line). Both
-# pass PIMPLE nCorrectors too (jetScour: 2), but 2 or 3 correctors print the
-# same digits there, so that one is not checked here. Runs one fluid step of
-# three coupled tutorials. Without the keyword the solver prints no advice
-# (timeStepAdvice no echoed).
+# The coupled time-step advice has one code path: the solver's
+# (src/mpmFoam/coupling/coupledTimeStepAdvice, docs/stabilityAnalysis.md
+# 7b.7). A run prints it at start-up with coupling { timeStepAdvice yes; };
+# `mpmAdviseTimeStep <case>` (bin/, on PATH) runs `mpmFoam -adviseTimeStep`,
+# which sets the case up as a run does, prints the same lines and stops.
+#
+# For five coupled cases - settlingSuspension (WenYu, dilute),
+# consolidation (Ergun, linearElastic), jetScour (Gidaspow, druckerPrager,
+# FLIP 0.95, no cell size h in its blockMeshDict), and two APIC cases at a
+# 2 ms fluid step: underwaterGranularCollapse (no h either) and the
+# fluidised bed with transfer APIC and no flipRatio (the issue-28 case: the
+# solver analysed APIC as FLIP 0.99, the unused flipRatio default, and
+# answered "largest stable fluid step 0.00023671 s, margin 0.1184", while
+# adviseCoupledCase.py read flipRatio as 0 and answered ">= 0.016 s, margin
+# >= 8") - it checks:
+#   * mpmAdviseTimeStep <case> prints the 8 lines the solver's
+#     timeStepAdvice yes run prints, character for character, without --h;
+#   * it writes nothing: the case's files (names, sizes, times) are the same
+#     before and after, no time directory;
+#   * adviseCoupledCase.py <case> (no override) prints the same lines (it
+#     runs mpmAdviseTimeStep), and as a parameter study with the solver's
+#     own alpha.solid (--aS, and --h where blockMeshDict has none) it starts
+#     from the solver's numbers: the same 8 lines;
+#   * the APIC cases are analysed as PIC (alpha 0) and say so.
+# Then: jetScour decomposed on 2 ranks with the bed on rank 1 gives the
+# serial advice; without the keyword a run prints none; a case without a
+# fluid gets the note and the pure-MPM check; bad input is the solver's
+# FatalIOError; and the advisor's commands of docs/stabilityAnalysis.md 7b.7,
+# copied here and grepped in the doc (a doc change fails the test), run as
+# written.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
-tool="$MPMFOAM_BUILD/applications/tools/mpmStabilityAnalysis/mpmStabilityAnalysis"
-advise="$MPMFOAM_ROOT/applications/tools/mpmStabilityAnalysis/adviseCoupledCase.py"
+study="$MPMFOAM_ROOT/applications/tools/mpmStabilityAnalysis/adviseCoupledCase.py"
+doc="$MPMFOAM_ROOT/docs/stabilityAnalysis.md"
 block() { awk '/^Coupled time-step advice/ {f = 1} f {print} /largest stable fluid step/ {f = 0}'; }
+snapshot() { (cd "$1" && find . -printf '%p %s %T@\n' | sort); }
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # oneStepCase <case> [advice yes|default]: the case set to run one fluid
 # step, with timeStepAdvice yes unless default
@@ -31,50 +48,79 @@ oneStepCase()
     sed -i "s/^endTime .*/endTime $dt;/" "$c/system/controlDict"
 }
 
-# runOneStep <case> [advice yes|default]: one fluid step, log in log.mpmFoam
-runOneStep()
+# same <what> <expected> <actual>: equal, 8 lines
+same()
 {
-    local c="$1"
-    oneStepCase "$@"
-    runIn "$c" bash -c "blockMesh > log.blockMesh 2>&1 && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1" \
-        || { echo "FAIL: $c did not run"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); }
+    local n
+    n=$(echo "$2" | grep -c .)
+    if [ "$n" -eq 8 ] && [ "$2" = "$3" ]; then
+        echo "PASS: $1 (8 lines)"
+    else
+        fail "$1: $n lines, or they differ:"
+        diff <(echo "$2") <(echo "$3")
+    fi
 }
 
-for t in settlingSuspension:0 consolidation:0 jetScour:0.005; do
-    name="${t%%:*}" h="${t##*:}"
-    c=$(copyTutorial "multiphase/$name" "$name")
-    runOneStep "$c"
-    hopt=(); [ "$h" != 0 ] && hopt=(--h "$h")
-    solver=$(block < "$c/log.mpmFoam")
-    script=$("$PY" "$advise" "$c" --tool "$tool" "${hopt[@]}" | block)
-    echo "== $name, solver:"; echo "$solver"
-    grep "the analysis took" "$c/log.mpmFoam"
-    echo "== $name, adviseCoupledCase.py:"; echo "$script"
-    lines=$(echo "$solver" | grep -c .)
-    if [ "$lines" -eq 8 ] && [ "$solver" = "$script" ]; then
-        echo "PASS: $name: the solver's advice equals the tool's ($lines lines)"
+# name:tutorial:edit - edit: apic2ms = transfer APIC, no flipRatio, deltaT 2 ms
+for t in settlingSuspension:settlingSuspension: consolidation:consolidation: jetScour:jetScour: \
+         underwaterAPIC:underwaterGranularCollapse:apic2ms fluidisedBedAPIC:fluidisedBed:apic2ms; do
+    IFS=: read -r name tutorial edit <<< "$t"
+    c=$(copyTutorial "multiphase/$tutorial" "$name")
+    if [ "$edit" = apic2ms ]; then
+        sed -i 's/^transfer .*/transfer        APIC;/; /^flipRatio/d' "$(props "$c")"
+        sed -i 's/^deltaT .*/deltaT          0.002;/' "$c/system/controlDict"
+    fi
+    oneStepCase "$c"
+    runApps "$c" blockMesh mpmSetParticles || { fail "$name set-up"; continue; }
+
+    before=$(snapshot "$c")
+    advisor=$(mpmAdviseTimeStep "$c"); rc=$?
+    after=$(snapshot "$c")
+    [ $rc -eq 0 ] || fail "$name: mpmAdviseTimeStep exit status $rc"
+    if [ "$before" = "$after" ] && ! ls -d "$c"/[0-9]* | grep -qv '/0$'; then
+        echo "PASS: $name: mpmAdviseTimeStep wrote nothing (the case's files unchanged, no time directory)"
     else
-        echo "FAIL: $name: the solver's advice ($lines lines) differs from the tool's:"
-        diff <(echo "$solver") <(echo "$script")
-        failures=$((failures + 1))
+        fail "$name: mpmAdviseTimeStep changed the case:"; diff <(echo "$before") <(echo "$after")
+    fi
+
+    runApps "$c" mpmFoam || { fail "$name did not run"; tail -20 "$c/log.mpmFoam"; continue; }
+    solver=$(block < "$c/log.mpmFoam")
+    echo "== $name, mpmAdviseTimeStep:"; echo "$advisor"
+    same "$name: mpmAdviseTimeStep prints the solver's timeStepAdvice lines" "$solver" "$(echo "$advisor" | block)"
+
+    delegated=$("$PY" "$study" "$c" | block)
+    same "$name: adviseCoupledCase.py without an override prints them too (it runs mpmAdviseTimeStep)" "$solver" "$delegated"
+
+    aS=$(sed -n 's/.*alpha.solid \([0-9.e+-]*\): the largest.*/\1/p' "$c/log.mpmFoam")
+    hopt=()
+    # the cell size where blockMeshDict has no h: the tutorial's own
+    case "$tutorial" in jetScour) hopt=(--h 0.005) ;; underwaterGranularCollapse) hopt=(--h 0.01) ;; esac
+    studied=$("$PY" "$study" "$c" --aS "$aS" "${hopt[@]}" | block)
+    same "$name: adviseCoupledCase.py as a study (--aS $aS${hopt[*]:+ ${hopt[*]}}) starts from the solver's numbers" "$solver" "$studied"
+
+    if [ "$edit" = apic2ms ]; then
+        if echo "$solver" | grep -q "(CBS alpha 0 USL)" && grep -q "APIC transfer is analysed as PIC, alpha 0" <<< "$advisor"; then
+            echo "PASS: $name: APIC analysed as PIC (alpha 0), and the note says so: $(echo "$solver" | grep 'largest stable')"
+        else
+            fail "$name: APIC not analysed as PIC (alpha 0) or no note"
+        fi
     fi
 done
+jetScourAdvice=$(block < "$SCRATCH/jetScour/log.mpmFoam")
 
 # Decomposed on 2 ranks: jetScour's bed (y < 0.06 m) lies wholly on rank 1,
 # the master holds only water (manual split at mid-height, y = 0.1 m). The
 # advice must still equal the serial run's: the solid fraction, the
 # viscosity and h reach the master reduced over the ranks.
-serial=$(block < "$SCRATCH/jetScour/log.mpmFoam")
 p=$(copyTutorial multiphase/jetScour jetScourParallel)
 oneStepCase "$p"
-runApps "$p" blockMesh mpmSetParticles || { echo "FAIL: jetScourParallel set-up"; failures=$((failures + 1)); }
+runApps "$p" blockMesh mpmSetParticles || fail "jetScourParallel set-up"
 # jetScour's three blocks of 40 rows: rank 0 for the top 20 rows
 manualSlices "$p" "0 if j >= 20 else 1" "27 40 1" "6 40 1" "27 40 1"
 decomposeCase "$p" 2 manual 'dataFile "cellDecomposition";'
 (cd "$p" && timeout 120 mpirun -np 2 mpmFoam -parallel > log.mpmFoam 2>&1) \
-    || { echo "FAIL: jetScour on 2 ranks did not run"; tail -20 "$p/log.mpmFoam"; failures=$((failures + 1)); }
+    || { fail "jetScour on 2 ranks did not run"; tail -20 "$p/log.mpmFoam"; }
 parallel=$(block < "$p/log.mpmFoam")
-echo "== jetScour on 2 ranks, solver:"; echo "$parallel"
 read -r n0 n1 <<< "$("$PY" - "$p" <<'PYEOF2'
 import os, sys
 import mpmPost
@@ -88,21 +134,58 @@ print(points(0), points(1))
 PYEOF2
 )"
 check "jetScour on 2 ranks: the master holds no material point, rank 1 the bed" "n0 == 0 and n1 > 0" n0="$n0" n1="$n1"
-if [ "$(echo "$parallel" | grep -c .)" -eq 8 ] && [ "$parallel" = "$serial" ]; then
-    echo "PASS: jetScour on 2 ranks (the bed on rank 1 only): the advice equals the serial run's (8 lines)"
-else
-    echo "FAIL: jetScour on 2 ranks: the advice differs from the serial run's:"
-    diff <(echo "$serial") <(echo "$parallel")
-    failures=$((failures + 1))
-fi
+same "jetScour on 2 ranks (the bed on rank 1 only): the advice equals the serial run's" "$jetScourAdvice" "$parallel"
 
 c=$(copyTutorial multiphase/settlingSuspension default)
-runOneStep "$c" default
+oneStepCase "$c" default
+runApps "$c" blockMesh mpmSetParticles mpmFoam || fail "settlingSuspension without the keyword did not run"
 if grep -q "timeStepAdvice no" "$c/log.mpmFoam" && ! grep -q "Coupled time-step advice" "$c/log.mpmFoam"; then
     echo "PASS: without the keyword: timeStepAdvice no, no advice printed"
 else
-    echo "FAIL: without the keyword the solver printed advice or did not echo timeStepAdvice no"
-    failures=$((failures + 1))
+    fail "without the keyword the solver printed advice or did not echo timeStepAdvice no"
+fi
+
+# A case without a fluid: the note and the pure-MPM check, exit status 0
+c=$(copyTutorial mpm/axialBar pureMpm)
+runApps "$c" blockMesh mpmSetParticles || fail "axialBar set-up"
+out=$(mpmAdviseTimeStep "$c"); rc=$?
+echo "$out"
+if [ $rc -eq 0 ] && grep -q "this case has no fluid.*is for coupled cases" <<< "$out" \
+    && grep -q "pure MPM: the solver checks its step against the stable Courant number" <<< "$out"; then
+    echo "PASS: a case without a fluid: the coupled advice is for coupled cases, the pure-MPM check instead"
+else
+    fail "a case without a fluid: status $rc or no clear note"
+fi
+
+# Bad input: the solver's error, as a run prints it
+c=$(copyTutorial multiphase/settlingSuspension badInput)
+runApps "$c" blockMesh mpmSetParticles || fail "badInput set-up"
+sed -i 's/^\( *subCycles .*\)$/\1\n    timeStepAdvice maybe;/' "$(props "$c")"
+expectFailure "mpmAdviseTimeStep, bad input: the solver's FatalIOError" "FOAM FATAL IO ERROR" mpmAdviseTimeStep "$c"
+expectFailure "mpmAdviseTimeStep, bad input: names the file and keyword" "mpmProperties.coupling.timeStepAdvice at line" mpmAdviseTimeStep "$c"
+expectFailure "mpmAdviseTimeStep, not a case directory" "no case directory" mpmAdviseTimeStep "$SCRATCH/none"
+
+# The advisor's commands of docs/stabilityAnalysis.md 7b.7, as written there
+docCommands=(
+    'cp -r $MPMFOAM_DIR/tutorials/multiphase/jetScour . && cd jetScour'
+    'blockMesh > log.blockMesh && mpmSetParticles > log.mpmSetParticles'
+    'mpmAdviseTimeStep'
+    '$MPMFOAM_DIR/applications/tools/mpmStabilityAnalysis/adviseCoupledCase.py . --h 0.005 --stress-free --aS 0.55'
+)
+for cmd in "${docCommands[@]}"; do
+    grep -qxF "    $cmd" "$doc" || fail "docs/stabilityAnalysis.md no longer has the command '$cmd' (keep the doc and this test in sync)"
+done
+mkdir -p "$SCRATCH/doc"
+script=$(printf '%s\n' "set -e" "${docCommands[@]}")
+docOut=$(cd "$SCRATCH/doc" && timeout 120 bash -c "$script" 2>&1); rc=$?
+echo "== the doc's commands:"; echo "$docOut"
+[ $rc -eq 0 ] || fail "the doc's commands failed (status $rc)"
+same "the doc's mpmAdviseTimeStep in a copy of jetScour prints jetScour's advice" "$jetScourAdvice" "$(echo "$docOut" | block | head -8)"
+if grep -q "^adviseCoupledCase.py: a parameter study, not the case's advice" <<< "$docOut" \
+    && [ "$(echo "$docOut" | grep -c '^Coupled time-step advice')" -eq 2 ]; then
+    echo "PASS: the doc's study command says it is a parameter study, not the case's advice, and prints its advice"
+else
+    fail "the doc's study command: no parameter-study heading or no advice"
 fi
 
 finish

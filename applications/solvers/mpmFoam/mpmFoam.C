@@ -45,6 +45,16 @@ int main(int argc, char *argv[])
         " decomposeParDict); example cases: $MPMFOAM_DIR/tutorials;"
         " documentation: $MPMFOAM_DIR/README.md and docs/."
     );
+    argList::addBoolOption
+    (
+        "adviseTimeStep",
+        "Set the case up as a run does (mesh, lattice, points, fluid and"
+        " coupling), print the time-step advice - a coupled case the"
+        " coupled analysis' (the lines of coupling { timeStepAdvice yes; }),"
+        " a case without a fluid the pure-MPM check - and stop: no time"
+        " step, nothing written (mpmAdviseTimeStep <case> prints the"
+        " advice alone; docs/stabilityAnalysis.md 7b.7)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
@@ -54,8 +64,17 @@ int main(int argc, char *argv[])
     // printed once in a decomposed run (errorsOnce.H)
     reportErrorsOnce([&]()
     {
-        mpmFoamModule module(mesh);
-        runSolverModule(runTime, module);
+        const bool adviseOnly = args.found("adviseTimeStep");
+        mpmFoamModule module(mesh, adviseOnly);
+        if (adviseOnly)
+        {
+            Info<< "-adviseTimeStep: the case set up as for a run; no time "
+                << "step taken, nothing written" << nl << endl;
+        }
+        else
+        {
+            runSolverModule(runTime, module);
+        }
     });
 
     Info<< "End\n" << endl;

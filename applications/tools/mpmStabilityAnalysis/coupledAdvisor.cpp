@@ -1,6 +1,7 @@
 // mpmStabilityAnalysis --model coupled --advise: the coupled analysis in a
-// case's physical parameters (adviseCoupledCase.py reads them from the
-// dictionaries). The advice itself is the core's (stability/coupledAdvice,
+// case's physical parameters, for parameter studies (adviseCoupledCase.py
+// reads them from the dictionaries, with an override; a case's advice is
+// the solver's, mpmAdviseTimeStep <case>). The advice itself is the core's (stability/coupledAdvice,
 // which the solver prints at start-up too): this file reads the options and
 // makes the laws by name. Prints the MPM step (with the pure-MPM limit and
 // its margin), the sub-cycles, max |G| of each variant at the case's step,

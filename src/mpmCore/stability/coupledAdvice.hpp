@@ -1,9 +1,10 @@
 // Time-step advice for a coupled case: the coupled analysis (coupledSymbol)
-// in a case's physical parameters. One home for it: the tool's --advise
-// (mpmStabilityAnalysis --model coupled --advise, adviseCoupledCase.py) and
-// the solver's start-up print (src/mpmFoam/coupling/coupledTimeStepAdvice)
-// both call adviseCoupled and print adviceLines, so the two print the same
-// text for the same case (tests/cases/coupledSolverAdvice.sh compares them).
+// in a case's physical parameters. One home for it: the solver's advice
+// (src/mpmFoam/coupling/coupledTimeStepAdvice: a run's start-up print and
+// mpmFoam -adviseTimeStep, i.e. mpmAdviseTimeStep <case>, the case advisor)
+// and the tool's --advise (mpmStabilityAnalysis --model coupled --advise,
+// adviseCoupledCase.py's parameter studies) both call adviseCoupled and
+// print adviceLines (tests/cases/coupledSolverAdvice.sh).
 //
 // beta (zero slip) and the parcel's wave speed come from the core's own drag
 // and constitutive laws; the shipped sub-cycle rule n = ceil(Dt/dt_MPM),

@@ -28,7 +28,7 @@ void Foam::printCoupledTimeStepAdvice
     const mpmModel& mpm = coupling.mpm();
     const materialLibrary& materials = mpm.materials();
 
-    // The first material with a drag, as adviseCoupledCase.py takes it
+    // The first material with a drag
     const dragForce* drag = dynamic_cast<const dragForce*>(coupling.findForce("drag"));
     label material = -1;
     for (label i = 0; drag && i < materials.size() && material < 0; ++i)
@@ -86,11 +86,16 @@ void Foam::printCoupledTimeStepAdvice
     // As for the pure-MPM check (stableCourant.H): the analysis has lumped
     // mass and PIC/FLIP transfer only
     const mpm::StepOptions& o = mpm.controls().step;
-    if (o.transfer == mpm::Transfer::apic || o.massMatrix == mpm::MassMatrix::consistent)
+    if (o.transfer == mpm::Transfer::apic)
     {
         Info<< "  (the analysis takes lumped mass and PIC/FLIP transfer; this case's "
-            << (o.transfer == mpm::Transfer::apic ? "APIC transfer" : "consistent mass")
-            << " is not analysed)" << nl;
+            << "APIC transfer is analysed as PIC, alpha 0: its point velocity is the "
+            << "PIC interpolation, its affine term is not analysed)" << nl;
+    }
+    if (o.massMatrix == mpm::MassMatrix::consistent)
+    {
+        Info<< "  (the analysis takes lumped mass and PIC/FLIP transfer; this case's "
+            << "consistent mass is not analysed)" << nl;
     }
     Info<< "  (material " << materials.names()[material] << ", alpha.solid "
         << alphaS << ": the largest at the start; the analysis took "

@@ -7,7 +7,10 @@
 
 bool Foam::fluidPhase::present(const fvMesh& mesh)
 {
-    const fileName tp(mesh.time().constant()/"transportProperties");
+    // Absolute (the root case's constant, also for a decomposed case):
+    // constant() alone is relative to the working directory, not the case
+    // (mpmFoam -case <dir> run from elsewhere read a coupled case as pure MPM)
+    const fileName tp(mesh.time().globalPath()/mesh.time().constant()/"transportProperties");
     if (!isFile(tp)) return false;
 
     // A fluid case must be complete: say what is missing, before reading.

@@ -8,7 +8,12 @@ mpm::stability::AnalysisSetup Foam::analysedStep(const mpm::StepOptions& o)
     namespace st = mpm::stability;
     st::AnalysisSetup s;
     s.shape = o.shape;
-    s.alpha = o.flipRatio;
+    // APIC ignores flipRatio: its point velocity is the PIC interpolation
+    // (kernels/g2p.hpp), so its analysed part is PIC, alpha 0; the affine
+    // term it adds to P2G is not analysed. Not the unused flipRatio (0.99
+    // by default, absent from APIC cases): the coupled advice analysed
+    // that FLIP blend for APIC before (issue 28 item 4)
+    s.alpha = o.transfer == mpm::Transfer::apic ? 0 : o.flipRatio;
     s.mass = mpm::MassMatrix::lumped;
     s.scheme = o.stressUpdate;
     s.offsets = {0};

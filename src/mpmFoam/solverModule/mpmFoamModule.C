@@ -7,6 +7,7 @@
 #include "completeTimes.H"
 #include "accuracyFrontLog.H"
 #include "coupledTimeStepAdvice.H"
+#include "stableCourant.H"
 #include <cmath>
 
 namespace Foam
@@ -15,12 +16,15 @@ namespace Foam
     addToRunTimeSelectionTable(solverModule, mpmFoamModule, fvMesh);
 }
 
-Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
+Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh, bool adviseTimeStep)
 :
     solverModule(mesh),
     mpm_(mesh)
 {
-    mpm_.report(Info);   // state at the start time
+    // The state at the start time; not when only advising: the report
+    // writes the diagnostics' files (postProcessing/mpmSummary), and the
+    // advice writes nothing
+    if (!adviseTimeStep) mpm_.report(Info);
 
     if (fluidPhase::present(mesh))
     {
@@ -29,7 +33,7 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
         coupling_.reset(new fluidCoupling(mesh, mpm_, fluid_()));
 
         checkStep(runTime, "the fluid step; the grains sub-cycle within it");
-        if (coupling_->timeStepAdvice())
+        if (coupling_->timeStepAdvice() || adviseTimeStep)
         {
             printCoupledTimeStepAdvice(coupling_(), pimple_(), runTime.deltaTValue());
         }
@@ -41,6 +45,29 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh)
         {
             maxCo_ = readBounded(cd, "maxCo", 1, SMALL, GREAT);
             maxFluidDeltaT_ = readBounded(cd, "maxDeltaT", GREAT, SMALL, GREAT);
+        }
+        Info<< endl;
+    }
+    else if (adviseTimeStep)
+    {
+        // No coupled analysis without a fluid: the pure-MPM check instead
+        const stableCourant l = analysedCourantLimit(mpm_.controls().step);
+        const scalar courant = mpm_.controls().courant;
+        Info<< "Time-step advice: this case has no fluid (no "
+            << "constant/transportProperties); the coupled advice "
+            << "(docs/stabilityAnalysis.md 7b.7) is for coupled cases" << nl
+            << "  pure MPM: the solver checks its step against the stable "
+            << "Courant number of the case's algorithm "
+            << "(docs/stabilityAnalysis.md 6d): ";
+        if (l.limit > 0)
+        {
+            Info<< l.limit << " (" << l.description.c_str() << "); timeStep "
+                << "courant " << courant << ": margin " << l.limit/courant << nl;
+        }
+        else
+        {
+            Info<< "not analysed (" << l.description.c_str() << "); steps are "
+                << "checked against Courant number 1" << nl;
         }
         Info<< endl;
     }
