@@ -27,8 +27,8 @@
 # Then: jetScour decomposed on 2 ranks with the bed on rank 1 gives the
 # serial advice; without the keyword a run prints none; a case without a
 # fluid gets the note and the pure-MPM check; bad input is the solver's
-# FatalIOError; and the advisor's commands of docs/stabilityAnalysis.md 7b.7,
-# copied here and grepped in the doc (a doc change fails the test), run as
+# FatalIOError; and the advisor's commands of docs/stabilityAnalysis.md 7b.7
+# (the block marked stability-advisor, runDocBlock), run as
 # written.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
@@ -166,20 +166,10 @@ expectFailure "mpmAdviseTimeStep, bad input: names the file and keyword" "mpmPro
 expectFailure "mpmAdviseTimeStep, not a case directory" "no case directory" mpmAdviseTimeStep "$SCRATCH/none"
 
 # The advisor's commands of docs/stabilityAnalysis.md 7b.7, as written there
-docCommands=(
-    'cp -r $MPMFOAM_DIR/tutorials/multiphase/jetScour . && cd jetScour'
-    'blockMesh > log.blockMesh && mpmSetParticles > log.mpmSetParticles'
-    'mpmAdviseTimeStep'
-    '$MPMFOAM_DIR/applications/tools/mpmStabilityAnalysis/adviseCoupledCase.py . --h 0.005 --stress-free --aS 0.55'
-)
-for cmd in "${docCommands[@]}"; do
-    grep -qxF "    $cmd" "$doc" || fail "docs/stabilityAnalysis.md no longer has the command '$cmd' (keep the doc and this test in sync)"
-done
 mkdir -p "$SCRATCH/doc"
-script=$(printf '%s\n' "set -e" "${docCommands[@]}")
-docOut=$(cd "$SCRATCH/doc" && timeout 120 bash -c "$script" 2>&1); rc=$?
+runDocBlock docs/stabilityAnalysis.md stability-advisor "$SCRATCH/doc" || fail "the doc's commands failed"
+docOut=$(cat "$SCRATCH/doc/log.doc.stability-advisor")
 echo "== the doc's commands:"; echo "$docOut"
-[ $rc -eq 0 ] || fail "the doc's commands failed (status $rc)"
 same "the doc's mpmAdviseTimeStep in a copy of jetScour prints jetScour's advice" "$jetScourAdvice" "$(echo "$docOut" | block | head -8)"
 if grep -q "^adviseCoupledCase.py: a parameter study, not the case's advice" <<< "$docOut" \
     && [ "$(echo "$docOut" | grep -c '^Coupled time-step advice')" -eq 2 ]; then
