@@ -134,11 +134,12 @@ struct NodalUpdate
 template<class Exec>
 struct FrictionImpulse
 {
-    GhostView G; GridView g; Real* J[3]; Real dt;
+    GhostView G; GridView g; Real* J[3]; const Real* stuck[3]; Real dt;
     MPM_HOST_DEVICE void operator()(Index k) const
     {
         const int a = G.axis[k];
-        if (!(G.mu[k] > 0) || G.stepSign[a][k] > 0) return;   // no friction, or no contact
+        // no friction, no contact, or stuck (the noSlip mirror did the work)
+        if (!(G.mu[k] > 0) || G.stepSign[a][k] > 0 || stuck[a][G.image[k]] > 0) return;
         Exec::add(J[a] + G.image[k], frictionGhostImpulse(g, G.ghost[k], a, G.outward[k], dt));
     }
 };
@@ -146,14 +147,14 @@ struct FrictionImpulse
 // ... then each node's first-layer operations and slides, in order
 struct FrictionNodes
 {
-    FrictionView F; const Real* mass; Real* J[3]; Real* v[3]; Real tol;
+    FrictionView F; const Real* mass; Real* J[3]; const Real* stuck[3]; Real* v[3]; Real tol;
     MPM_HOST_DEVICE void operator()(Index i) const
     {
         const Index I = F.node[i];
         for (Index q = F.start[i]; q < F.start[i + 1]; ++q)
         {
-            if (F.firstLayer[q]) frictionFirstLayer(J, mass, v, tol, I, F.axis[q], F.outward[q], F.mu[q]);
-            else frictionSlide(J, mass, v, tol, I, F.axis[q], F.mu[q]);
+            if (!F.firstLayer[q]) frictionSlide(J, mass, v, tol, I, F.axis[q], F.mu[q]);
+            else if (!(stuck[F.axis[q]][I] > 0)) frictionFirstLayer(J, mass, v, tol, I, F.axis[q], F.outward[q], F.mu[q]);
         }
     }
 };
@@ -259,6 +260,21 @@ struct ContactSign
         const int a = G.axis[k];
         if (a < 0) return;
         if (!(trial[a][G.image[k]]*G.outward[k] >= 0)) G.stepSign[a][k] = 1.0;
+    }
+};
+
+// Friction walls in contact: stick (the noSlip mirror this step, the node
+// marked) or slide (MpmSystem::decideFrictionStick), before the fold
+struct FrictionStick
+{
+    GhostView G; GridView g; Real* stuck[3]; Real dt; bool withForce; Real gravity[3];
+    MPM_HOST_DEVICE void operator()(Index k) const
+    {
+        const int a = G.axis[k];
+        if (a < 0 || !(G.mu[k] > 0) || G.stepSign[a][k] > 0) return;
+        if (!frictionSticks(g, G.image[k], a, G.outward[k], G.mu[k], dt, withForce, gravity)) return;
+        for (int d = 0; d < 3; ++d) if (d != a) G.stepSign[d][k] = -1.0;
+        stuck[a][G.image[k]] = 1.0;   // ghosts sharing an image write the same
     }
 };
 
@@ -570,8 +586,12 @@ private:
             Real* J[3];
             for (int d = 0; d < 3; ++d) J[d] = trial_.data() + d*g_.n;
             Exec::zero(trial_.data(), 3*std::size_t(g_.n));
-            Exec::forEach(G_.n, FrictionImpulse<Exec>{G_, g_, {J[0], J[1], J[2]}, dt}, "the friction impulse kernel");
-            Exec::forEach(F_.n, FrictionNodes{F_, g_.mass, {J[0], J[1], J[2]}, {v[0], v[1], v[2]}, tol},
+            const Real* stuck[3];
+            for (int d = 0; d < 3; ++d) stuck[d] = stuck_.data() + d*g_.n;
+            Exec::forEach(G_.n, FrictionImpulse<Exec>{G_, g_, {J[0], J[1], J[2]}, {stuck[0], stuck[1], stuck[2]}, dt},
+                          "the friction impulse kernel");
+            Exec::forEach(F_.n, FrictionNodes{F_, g_.mass, {J[0], J[1], J[2]}, {stuck[0], stuck[1], stuck[2]},
+                                              {v[0], v[1], v[2]}, tol},
                           "the friction kernel");
         }
         if (ls_)
@@ -626,6 +646,14 @@ private:
         Exec::forEach(G_.n, ContactTrialGhost<Exec>{G_, g_, {trial[0], trial[1], trial[2]}, dt, withForce},
                       "the wall contact kernel");
         Exec::forEach(G_.n, ContactSign{G_, {trial[0], trial[1], trial[2]}}, "the wall contact kernel");
+        if (F_.n > 0)
+        {
+            if (stuck_.size() != 3*std::size_t(g_.n)) stuck_.resize(3*std::size_t(g_.n));
+            Exec::zero(stuck_.data(), stuck_.size());
+            FrictionStick f{G_, g_, {}, dt, withForce, {c_.gravity[0], c_.gravity[1], c_.gravity[2]}};
+            for (int d = 0; d < 3; ++d) f.stuck[d] = stuck_.data() + d*g_.n;
+            Exec::forEach(G_.n, f, "the friction stick kernel");
+        }
     }
 
     ResidentConfig c_;
@@ -637,6 +665,7 @@ private:
     PointView P_;
     Buffer<Real> grid_;
     Buffer<Real> trial_;
+    Buffer<Real> stuck_;   // per wall axis and node: 1 where a friction wall's image sticks this step
     GridView g_;
     Buffer<Index> ghostIndex_;
     Buffer<int> ghostAxis_;

@@ -16,6 +16,11 @@
 
 namespace mpm {
 
+Real ConstitutiveLaw::shearStrengthRatio() const
+{
+    return std::numeric_limits<Real>::infinity();
+}
+
 Real ConstitutiveLaw::maxStableDt(Real) const
 {
     return std::numeric_limits<Real>::infinity();

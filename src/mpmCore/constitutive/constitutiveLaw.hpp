@@ -44,6 +44,14 @@ public:
     // +infinity when the law has none.
     virtual Real maxStableDt(Real h) const;
 
+    // The largest ratio of shear to normal stress the material carries in
+    // simple shear (the friction it mobilises), or +infinity when its shear
+    // strength is not a friction alone (elastic solids, fluids, cohesive or
+    // stress-free grains). A friction wall cannot hold the material harder
+    // than this: the material next to it yields first
+    // (MpmSystem::frictionCap, docs/druckerPrager.md).
+    virtual Real shearStrengthRatio() const;
+
     // Stored (recoverable) elastic energy per unit reference volume, for
     // energy diagnostics: the strain energy of hyperelastic laws, the
     // complementary energy sigma:C^-1:sigma/2 (times J) of hypoelastic and

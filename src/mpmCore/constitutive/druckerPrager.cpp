@@ -23,6 +23,11 @@ Real DruckerPrager::planeStrainEta(Real angleDeg)
     return 3.0*std::sqrt(3.0)*std::tan(degToRad(angleDeg))/planeStrainDenominator(angleDeg);
 }
 
+Real DruckerPrager::shearStrengthRatio() const
+{
+    return cohesion_ > 0 ? ConstitutiveLaw::shearStrengthRatio() : eta_/std::sqrt(3.0);
+}
+
 Real DruckerPrager::planeStrainXi(Real angleDeg)
 {
     return 3.0*std::sqrt(3.0)/planeStrainDenominator(angleDeg);

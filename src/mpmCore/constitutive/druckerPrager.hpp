@@ -48,6 +48,9 @@ public:
     Real yieldFunction(const Real* sigma) const;
 
     Real eta() const { return eta_; }
+    // tau/sigma_n = eta/sqrt(3) in simple shear (the plane-strain match:
+    // 3 tan(phi)/sqrt(9 + 12 tan^2(phi))); infinite with cohesion
+    Real shearStrengthRatio() const override;
     Real xi() const { return xi_; }
     Real etaBar() const { return etaBar_; }
     Real storedEnergy(const Real* sigma, const Real* F) const override;

@@ -56,6 +56,8 @@ public:
 
     Real muS() const { return muS_; }
     Real mu2() const { return mu2_; }
+    // The largest friction the rheology reaches, at high inertial number
+    Real shearStrengthRatio() const override { return mu2_; }
     Real I0() const { return I0_; }
     Real grainDiameter() const { return d_; }
     Real grainDensity() const { return rhoS_; }

@@ -80,7 +80,12 @@ void Boundary::build
     free_.clear();
     spec_ = spec;
     hasOpen_ = false;
-    for (const auto& wc : spec.conditions) hasOpen_ = hasOpen_ || isOpen(wc.type);
+    hasFriction_ = false;
+    for (const auto& wc : spec.conditions)
+    {
+        hasOpen_ = hasOpen_ || isOpen(wc.type);
+        hasFriction_ = hasFriction_ || wc.type == WallType::friction;
+    }
     periodic_ = periodicAxes(L, spec);
     const bool decomposed = bool(ownsCell);
 

@@ -127,6 +127,7 @@ public:
     const BoundarySpec& spec() const { return spec_; }
     // Whether any face is open (outlet or inlet)
     bool hasOpenFaces() const { return hasOpen_; }
+    bool hasFriction() const { return hasFriction_; }
 
     // Whether the side is periodic (for wrapping positions).
     bool periodic(int axis) const { return periodic_[axis]; }
@@ -140,6 +141,7 @@ private:
     std::array<bool, 3> periodic_{false, false, false};
     BoundarySpec spec_;
     bool hasOpen_ = false;
+    bool hasFriction_ = false;
 };
 
 } // namespace mpm

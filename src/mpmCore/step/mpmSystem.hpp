@@ -24,6 +24,7 @@
 #include "stepOptions.hpp"
 #include "stepPlan.hpp"
 #include "stepTimers.hpp"
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -188,6 +189,9 @@ public:
     const FluidCoupling& coupling() const { return coupling_; }
 
     std::vector<std::unique_ptr<ConstitutiveLaw>>& materials() { return materials_; }
+    // The largest friction coefficient a friction wall applies: the largest
+    // shear strength ratio of the materials that have points (walls.cpp)
+    Real computeFrictionCap() const;
     const ConstitutiveLaw& material(int m) const { return *materials_[m]; }
 
     // Advances by dt. Throws NonFiniteError on NaN/inf.
@@ -321,6 +325,7 @@ private:
     // by the normal impulse of the wall's fold (momentum + dt force of its
     // contact ghosts) and contact at each node
     void applyFriction(std::array<std::vector<Real>, 3>& v, Real dt);
+    void decideFrictionStick(Real dt, bool withForce);
     // The level-set walls' node condition on an updated velocity
     void applyLevelSetWalls(std::array<std::vector<Real>, 3>& v);
     // Puts points inside a level-set wall back on its surface (moving walls
@@ -380,6 +385,10 @@ private:
     // Per node and wall axis: the normal impulse of friction walls in this
     // step (applyFriction; zero between its calls)
     std::array<std::vector<Real>, 3> wallImpulse_;
+    // Per node and wall axis: 1 where a friction wall's image sticks this
+    // step (decideFrictionStick)
+    std::array<std::vector<Real>, 3> wallStuck_;
+    Real frictionCap_ = std::numeric_limits<Real>::infinity();   // this step's computeFrictionCap
 
     // Scratch for the consistent-mass sweeps: per point and per node.
     std::array<std::vector<Real>, 3> pointScratch_;

@@ -95,6 +95,11 @@ void MpmSystem::stepResident(Real dt)
         ResidentConfig full = c;
         full.ghosts = boundary_.ghosts();
         full.frictionNodes = boundary_.frictionNodes();
+        // The friction walls' coefficients, at most the materials' friction
+        // (frictionCap): set again whenever the laws change
+        const Real cap = computeFrictionCap();
+        for (auto& g : full.ghosts) if (g.mu > 0) g.mu = std::min(g.mu, cap);
+        for (auto& f : full.frictionNodes) f.mu = std::min(f.mu, cap);
         full.periodicCopies = boundary_.periodicCopies();
         for (int a = 0; a < 3; ++a) full.periodic[a] = boundary_.periodic(a);
         r.configure(full);

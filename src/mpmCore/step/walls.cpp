@@ -7,6 +7,8 @@
 #include "../kernels/frictionWall.hpp"
 #include "../kernels/levelSetWall.hpp"
 #include "../kernels/views.hpp"
+#include <algorithm>
+#include <limits>
 
 namespace mpm {
 
@@ -68,6 +70,58 @@ void MpmSystem::decideWallContact(Real dt, bool withForce)
         const bool contact = trial[gh.unilateralAxis][gh.image]*gh.outward >= 0;
         if (!contact) ghostSign_[k][gh.unilateralAxis] = 1.0;
     }
+    decideFrictionStick(dt, withForce);
+}
+
+// A friction wall holds the material at most as hard as the material's own
+// friction (ConstitutiveLaw::shearStrengthRatio, the largest of the
+// materials that have points, on any rank): the wall's traction acts on
+// the first node layers, and the material between them and the wall
+// yields at its own friction first. A rougher wall is then that wall: a
+// granular layer on a rough incline flows at the rate its own friction
+// allows, not the wall's (issue 29).
+Real MpmSystem::computeFrictionCap() const
+{
+    const auto& P = particles_;
+    std::vector<std::int64_t> present(materials_.size(), 0);
+    for (Index p = 0; p < P.size(); ++p) present[P.material[p]] = 1;
+    if (subdomain_ && !present.empty())
+    {
+        subdomain_->comm().allReduce(present.data(), int(present.size()), ReduceOp::max);
+    }
+    Real cap = 0;
+    bool any = false;
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+    {
+        if (!present[m]) continue;
+        cap = std::max(cap, materials_[m]->shearStrengthRatio());
+        any = true;
+    }
+    return any ? cap : std::numeric_limits<Real>::infinity();
+}
+
+// Friction walls in contact: a node that sticks (frictionSticks) has its
+// wall's ghosts mirror it as a noSlip wall's do this step; wallStuck_ marks
+// it so that applyFriction leaves it alone. Before the momentum fold.
+void MpmSystem::decideFrictionStick(Real dt, bool withForce)
+{
+    if (!boundary_.hasFriction()) return;
+    const auto& ghosts = boundary_.ghosts();
+    const auto& active = region_.ghosts();
+    for (auto& a : wallStuck_) a.assign(lattice_.nNodes, 0.0);
+    frictionCap_ = computeFrictionCap();
+    const Real cap = frictionCap_;
+    const GridView g = gridView(grid_);
+    const Real gravity[3] = {options_.gravity[0], options_.gravity[1], options_.gravity[2]};
+    for (const Index k : active)
+    {
+        const auto& gh = ghosts[k];
+        const int a = gh.unilateralAxis;
+        if (!(gh.mu > 0) || ghostSign_[k][a] > 0) continue;   // no friction, or no contact
+        if (!frictionSticks(g, gh.image, a, gh.outward, std::min(gh.mu, cap), dt, withForce, gravity)) continue;
+        for (int d = 0; d < 3; ++d) if (d != a) ghostSign_[k][d] = -1.0;
+        wallStuck_[a][gh.image] = 1.0;
+    }
 }
 
 void MpmSystem::foldVector(std::array<std::vector<Real>, 3>& a) const
@@ -108,7 +162,8 @@ void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v, Real dt)
     // normal velocity still approaching the wall. The fold does most of the
     // work, so a bound taken from the second alone gave a fraction of mu
     // (tests/unit/frictionWallTest.cpp). The ghosts still hold their own
-    // momentum and force after the fold.
+    // momentum and force after the fold. Nodes that stick this step
+    // (decideFrictionStick) are the noSlip wall's and are left alone.
     const auto& ghosts = boundary_.ghosts();
     const GridView g = gridView(grid_);
     auto& J = wallImpulse_;
@@ -118,18 +173,22 @@ void MpmSystem::applyFriction(std::array<std::vector<Real>, 3>& v, Real dt)
     for (const Index k : region_.ghosts())
     {
         const auto& gh = ghosts[k];
-        if (gh.mu <= 0 || ghostSign_[k][gh.unilateralAxis] > 0) continue;   // no friction, or no contact
-        J[gh.unilateralAxis][gh.image] += frictionGhostImpulse(g, gh.ghost, gh.unilateralAxis, gh.outward, dt);
+        const int a = gh.unilateralAxis;
+        // no friction, no contact, or stuck (the noSlip mirror did the work)
+        if (gh.mu <= 0 || ghostSign_[k][a] > 0 || wallStuck_[a][gh.image] > 0) continue;
+        J[a][gh.image] += frictionGhostImpulse(g, gh.ghost, a, gh.outward, dt);
     }
     const Real tol = massTolerance_;
+    const Real cap = frictionCap_;   // this step's (decideFrictionStick)
     for (const auto& fn : boundary_.frictionNodes())
     {
-        frictionFirstLayer(Jp, g.mass, vp, tol, fn.node, fn.axis, fn.outward, fn.mu);
+        if (wallStuck_[fn.axis][fn.node] > 0) continue;
+        frictionFirstLayer(Jp, g.mass, vp, tol, fn.node, fn.axis, fn.outward, std::min(fn.mu, cap));
     }
     for (const Index k : region_.ghosts())
     {
         const auto& gh = ghosts[k];
-        if (gh.mu > 0) frictionSlide(Jp, g.mass, vp, tol, gh.image, gh.unilateralAxis, gh.mu);
+        if (gh.mu > 0) frictionSlide(Jp, g.mass, vp, tol, gh.image, gh.unilateralAxis, std::min(gh.mu, cap));
     }
 }
 

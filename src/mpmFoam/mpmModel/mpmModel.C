@@ -131,6 +131,23 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
         }
     }
     Info<< nl;
+    if (system_.boundary().hasFriction())
+    {
+        // A friction wall rougher than the material holds it only as hard
+        // as the material's own friction (MpmSystem::computeFrictionCap)
+        const scalar cap = system_.computeFrictionCap();
+        scalar most = 0;
+        for (const auto& wc : system_.boundary().spec().conditions)
+        {
+            if (wc.type == mpm::WallType::friction) most = max(most, wc.frictionCoefficient);
+        }
+        if (most > cap)
+        {
+            Info<< "Friction walls: coefficients above " << cap << ", the largest friction the"
+                << " material mobilises in simple shear, act as " << cap << ": the material next"
+                << " to the wall yields first (docs/druckerPrager.md)" << nl;
+        }
+    }
     // The step's phases, as every back-end runs them (step/stepPlan.hpp)
     Info<< "Step plan: " << system_.plan().describe().c_str() << nl;
     reportBalance(Info);
