@@ -35,6 +35,11 @@
 #     fix the wall held the first node layers at mu_w = 1.0 and the layer
 #     crept at 0.25 m/s^2, slowing (on a noSlip floor: 0.61, the mirror
 #     wall transmitting tau/sigma_n = 0.51).
+#  6. (issue 29) the friction given as mu = 0.5, the coefficient mobilised
+#     in simple shear, instead of phi (8 cells, noSlip floor): the layer
+#     holds at 26 deg (tan = 0.488 < 0.5) and flows at 28 deg (tan = 0.532),
+#     within [0.5, 1] of the rigid block's g (sin - 0.5 cos); the log says
+#     phi = 31.48 deg in the plane-strain match.
 # A law that mobilised tan(phi) = 0.577 (30 deg) or the Mohr-Coulomb
 # sin(phi) = 0.5 (26.57 deg) would not flow at 26.5 deg; a friction below
 # 0.466 would flow at 25 deg. ~15 s.
@@ -140,6 +145,32 @@ for mu in 0.45 1.0; do
     [ "$mu" = 1.0 ] && { grep -h "^Friction walls:" "$c/log.mpmFoam" \
         && echo "PASS: the log says the rough wall acts as the material's friction" \
         || { echo "FAIL: no 'Friction walls:' line in the log"; failures=$((failures + 1)); }; }
+done
+# 6. The friction as mu, the coefficient mobilised in simple shear
+for theta in 26 28; do
+    c=$(copyTutorial mpm/inclinedPlaneFlow "mu0.5_theta$theta")
+    rm -rf "$c/run"
+    sandMaterial "$c/constant/mpmProperties"
+    sed -i -e 's/phi 30;/mu 0.5;/' "$c/constant/mpmProperties"
+    sed -i -e 's/^\( *material \).*;/\1 sand;/' "$c/system/mpmSetParticlesDict"
+    sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^writeInterval .*/writeInterval 0.1;/' "$c/system/controlDict"
+    (cd "$c" && ./setCase "$theta" 8 0.04 > log.setCase) || { failures=$((failures + 1)); continue; }
+    runApps "$c" blockMesh mpmSetParticles mpmFoam \
+        || { echo "FAIL: run mu 0.5 at $theta deg"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
+    u=$(meanVelocity "$c")
+    echo "mu 0.5, theta = $theta deg: mean velocity [m/s] at t =" $u
+    if [ "$theta" = 26 ]; then
+        umax=$(echo "$u" | awk '{v = $2 < 0 ? -$2 : $2; if (v > m) m = v} END {print m + 0}')
+        check "mu 0.5 at 26 deg (tan 0.488 < 0.5): the layer holds (max |mean u| < 1e-3 m/s)" "u < 1e-3" u="$umax"
+        grep -h "mu 0.5 in simple shear: phi = 31.48 deg" "$c/log.mpmFoam" \
+            && echo "PASS: the log says which friction is in force" \
+            || { echo "FAIL: no 'mu 0.5 in simple shear' line in the log"; failures=$((failures + 1)); }
+    else
+        ratio=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {
+            r = 28*atan2(0, -1)/180; print (u1 - u0)/(t1 - t0)/(9.81*(sin(r) - 0.5*cos(r)))}')
+        check "mu 0.5 at 28 deg (tan 0.532 > 0.5): it flows, acceleration / rigid block in [0.5, 1]" \
+            "0.5 <= r <= 1" r="$ratio"
+    fi
 done
 [ -n "${acc4:-}" ] && [ -n "${acc16:-}" ] && check "26.5 deg: 4-cell and 16-cell layers accelerate alike (within 25 %)" \
     "abs(a - b)/b < 0.25" a="$acc4" b="$acc16"

@@ -79,4 +79,13 @@ if echo "$help" | grep -q "Material Point Method solver" && echo "$help" | tr '\
 else
     echo "FAIL: mpmFoam -help"; echo "$help" | tail -12; failures=$((failures + 1))
 fi
+# Issue 28 item 8: every model of the run-time tables is in the help
+flat=$(echo "$help" | tr '\n' ' ' | tr -s ' ')
+missing=""
+for m in linearElastic neoHookean newtonianFluid druckerPrager muIRheology dilute \
+         SchillerNaumann WenYu Ergun Gidaspow; do
+    echo "$flat" | grep -q "$m" || missing="$missing $m"
+done
+[ -z "$missing" ] && echo "PASS: mpmFoam -help lists every constitutive model and drag law" \
+    || { echo "FAIL: mpmFoam -help misses:$missing"; failures=$((failures + 1)); }
 finish

@@ -431,6 +431,7 @@ TEST(ConstitutiveLawRegistry, EveryLawIsConstructibleByName)
         Coefficients c;
         for (const Parameter& p : info.parameters)
             if (p.required) c[p.name] = values.at(p.name);
+        if (info.name == "druckerPrager") c["phi"] = 30;   // phi or mu: one of them
         const auto law = makeLaw(info.name, c);
         EXPECT_EQ(info.name, law->typeName());
         EXPECT_EQ(law->rho0(), 1000);
@@ -448,6 +449,35 @@ TEST(ConstitutiveLawRegistry, DefaultsAreApplied)
     EXPECT_EQ(dp.etaBar(), 0);                                           // psi = 0
     const Real zero[6] = {0, 0, 0, 0, 0, 0};
     EXPECT_EQ(dp.yieldFunction(zero), 0);                                // c = 0
+}
+
+// Issue 29: the friction given as the coefficient mobilised in simple shear
+// (mu) or as the plane-strain angle (phi). mu = 0.48038 is what phi = 30 deg
+// mobilises (docs/druckerPrager.md), so the two are one law; mu = tan 30 deg
+// needs phi = 37.76 deg; both, neither, or mu beyond the match's sqrt(3)/2
+// are refused.
+TEST(ConstitutiveLawRegistry, DruckerPragerFrictionAsMuOrPhi)
+{
+    const Coefficients base{{"rho", 1}, {"E", 1}, {"nu", 0}};
+    auto with = [&](const Coefficients& extra) { Coefficients c = base; for (auto& kv : extra) c.insert(kv); return c; };
+    const auto byPhi = makeLaw("druckerPrager", with({{"phi", 30}}));
+    const Real mu30 = byPhi->shearStrengthRatio();
+    EXPECT_NEAR(mu30, 3*std::tan(M_PI/6)/std::sqrt(9 + 12*std::tan(M_PI/6)*std::tan(M_PI/6)), 1e-15);
+    EXPECT_NEAR(mu30, 0.48038, 1e-5);
+    const auto byMu = makeLaw("druckerPrager", with({{"mu", mu30}}));
+    EXPECT_NEAR(byMu->shearStrengthRatio(), mu30, 1e-14);
+    EXPECT_NEAR(dynamic_cast<const DruckerPrager&>(*byMu).eta(), dynamic_cast<const DruckerPrager&>(*byPhi).eta(), 1e-14);
+    const Real tan30 = std::tan(M_PI/6);
+    EXPECT_NEAR(makeLaw("druckerPrager", with({{"mu", tan30}}))->shearStrengthRatio(), tan30, 1e-14);
+    EXPECT_NEAR(DruckerPrager::phiForSimpleShear(tan30), 37.76, 0.01);
+    EXPECT_NE(byMu->note().find("mu 0.4804 in simple shear: phi = 30 deg"), std::string::npos) << byMu->note();
+    EXPECT_NE(byPhi->note().find("mobilises mu = 0.4804"), std::string::npos) << byPhi->note();
+    expectInvalidMentioning([&] { makeLaw("druckerPrager", with({{"phi", 30}, {"mu", 0.5}})); },
+        {"druckerPrager", "'phi'", "'mu'", "not both"});
+    expectInvalidMentioning([&] { makeLaw("druckerPrager", base); }, {"'phi'", "'mu'", "not neither"});
+    expectInvalidMentioning([&] { makeLaw("druckerPrager", with({{"mu", 0.9}})); }, {"'mu'", "0.866"});
+    // a dilatancy angle above the friction angle mu implies
+    expectInvalidMentioning([&] { makeLaw("druckerPrager", with({{"mu", 0.3}, {"psi", 20}})); }, {"'psi'", "'phi'"});
 }
 
 TEST(ConstitutiveLawRegistry, UnknownLawListsValidNames)

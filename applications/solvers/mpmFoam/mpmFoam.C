@@ -27,17 +27,24 @@ Description
 #include "fvCFD.H"
 #include "mpmFoamModule.H"
 #include "errorsOnce.H"
+#include "constitutive/constitutiveLaw.hpp"
+#include "drag/dragLaw.hpp"
 
 int main(int argc, char *argv[])
 {
+    // The models, from the run-time tables (never a list by hand)
+    std::string laws, drags;
+    for (const auto& l : mpm::availableLaws()) laws += (laws.empty() ? "" : ", ") + l.name;
+    for (const auto& d : mpm::availableDragLaws()) drags += (drags.empty() ? "" : ", ") + d.name;
     argList::addNote
     (
         "Material Point Method solver for solids and granular material"
-        " (elastic, neo-Hookean, Drucker-Prager, dilute grains), the mesh"
-        " being the background lattice; with constant/transportProperties,"
+        " (constitutive models: " + laws + "), the mesh"
+        " being the background lattice, or a lattice of its own on any other"
+        " mesh; with constant/transportProperties,"
         " 0/U and 0/p the grains are coupled to a volume-averaged"
-        " incompressible fluid solved with PIMPLE (drag, pressure gradient,"
-        " buoyancy).\n"
+        " incompressible fluid solved with PIMPLE (drag: " + drags + ";"
+        " pressure gradient, buoyancy).\n"
         "Reads constant/mpmProperties and the points seeded by"
         " mpmSetParticles (system/mpmSetParticlesDict).\n"
         "Annotated example case files: $MPMFOAM_DIR/etc/caseDicts"

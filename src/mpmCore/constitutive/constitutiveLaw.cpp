@@ -89,7 +89,13 @@ std::vector<LawInfo> buildRegistry()
         "non-associated, tension cut-off at the apex",
         {
             density(), youngModulus(), poissonRatio(),
-            required("phi", "friction angle [deg]", 0, 90, false, true),
+            // The friction as an angle (plane-strain Mohr-Coulomb match) or
+            // as the coefficient it mobilises in simple shear: one of them
+            optional("phi", "friction angle [deg], matched to Mohr-Coulomb in plane strain "
+                     "(or give mu)", std::nan(""), 0, 90, false, true),
+            optional("mu", "friction coefficient mobilised in simple shear, tau <= mu p, as "
+                     "granular-flow codes write it (instead of phi) [-]", std::nan(""), 0,
+                     std::sqrt(3.0)/2, false, true),
             optional("c", "cohesion [Pa]", 0.0, 0, inf, false, false),
             optional("psi", "dilatancy angle [deg], at most phi", 0.0, 0, 90, false, true),
             optional("alphaContact", "solid fraction below which the grains are out of contact "

@@ -52,6 +52,11 @@ public:
     // (MpmSystem::frictionCap, docs/druckerPrager.md).
     virtual Real shearStrengthRatio() const;
 
+    // One line on how the parameters given were read (the friction match
+    // of druckerPrager), echoed at start-up; empty when there is nothing
+    // to add
+    virtual std::string note() const { return std::string(); }
+
     // Stored (recoverable) elastic energy per unit reference volume, for
     // energy diagnostics: the strain energy of hyperelastic laws, the
     // complementary energy sigma:C^-1:sigma/2 (times J) of hypoelastic and

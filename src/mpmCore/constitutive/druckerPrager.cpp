@@ -37,6 +37,7 @@ DruckerPrager::DruckerPrager(Real rho, Real E, Real nu, Real phiDeg, Real c, Rea
                              Real alphaContact)
 :
     IsotropicElasticLaw(rho, E, nu),
+    phiDeg_(phiDeg),
     cohesion_(c),
     eta_(planeStrainEta(phiDeg)),
     xi_(planeStrainXi(phiDeg)),
@@ -53,13 +54,49 @@ DruckerPrager::DruckerPrager(Real rho, Real E, Real nu, Real phiDeg, Real c, Rea
     }
 }
 
+Real DruckerPrager::phiForSimpleShear(Real mu)
+{
+    return std::atan(3*mu/std::sqrt(9 - 12*mu*mu))*180.0/M_PI;
+}
+
 std::unique_ptr<ConstitutiveLaw> DruckerPrager::create(const Coefficients& c)
 {
-    return std::make_unique<DruckerPrager>
+    const Real phi = c.at("phi"), mu = c.at("mu");
+    if (std::isnan(phi) == std::isnan(mu))
+    {
+        throw std::invalid_argument
+        (
+            std::string("constitutive law 'druckerPrager': give the friction as 'phi' (angle [deg], ")
+            + "matched to Mohr-Coulomb in plane strain) or as 'mu' (the coefficient mobilised in "
+            + "simple shear, tau <= mu p), " + (std::isnan(phi) ? "not neither" : "not both")
+        );
+    }
+    auto law = std::make_unique<DruckerPrager>
     (
-        c.at("rho"), c.at("E"), c.at("nu"), c.at("phi"), c.at("c"), c.at("psi"),
-        c.at("alphaContact")
+        c.at("rho"), c.at("E"), c.at("nu"), std::isnan(phi) ? phiForSimpleShear(mu) : phi, c.at("c"),
+        c.at("psi"), c.at("alphaContact")
     );
+    law->givenAsMu_ = !std::isnan(mu);
+    return law;
+}
+
+std::string DruckerPrager::note() const
+{
+    std::ostringstream s;
+    s.precision(4);
+    const Real mu = eta_/std::sqrt(3.0);
+    if (givenAsMu_)
+    {
+        s << "mu " << mu << " in simple shear: phi = " << phiDeg_
+          << " deg in the plane-strain Mohr-Coulomb match";
+    }
+    else
+    {
+        s << "phi " << phiDeg_ << " deg (plane-strain Mohr-Coulomb match) mobilises mu = " << mu
+          << " (" << std::atan(mu)*180.0/M_PI << " deg) in simple shear, not tan(phi) = "
+          << std::tan(phiDeg_*M_PI/180.0);
+    }
+    return s.str() + " (docs/druckerPrager.md)";
 }
 
 DruckerPragerParams DruckerPrager::kernelParams() const

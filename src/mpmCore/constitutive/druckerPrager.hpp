@@ -51,6 +51,11 @@ public:
     // tau/sigma_n = eta/sqrt(3) in simple shear (the plane-strain match:
     // 3 tan(phi)/sqrt(9 + 12 tan^2(phi))); infinite with cohesion
     Real shearStrengthRatio() const override;
+    std::string note() const override;
+
+    // The friction angle of the plane-strain match that mobilises mu in
+    // simple shear: tan(phi) = 3 mu / sqrt(9 - 12 mu^2), mu < sqrt(3)/2
+    static Real phiForSimpleShear(Real mu);
     Real xi() const { return xi_; }
     Real etaBar() const { return etaBar_; }
     Real storedEnergy(const Real* sigma, const Real* F) const override;
@@ -62,6 +67,8 @@ public:
 private:
     DruckerPragerParams kernelParams() const;
 
+    Real phiDeg_;
+    bool givenAsMu_ = false;
     Real cohesion_;
     Real eta_, xi_, etaBar_;
     // Packing below which the grains are not in contact: the skeleton is

@@ -2,6 +2,7 @@
 #include "IOstreams.H"
 #include "knownKeywords.H"
 #include "drag/dragLaw.hpp"
+#include <cmath>
 #include <sstream>
 
 namespace
@@ -109,9 +110,20 @@ Foam::materialLibrary::materialLibrary(const dictionary& mpmDict, bool echo)
                         << mpm::rangeText(p).c_str()
                         << exit(FatalIOError);
                 }
+                if (std::isnan(p.defaultValue))
+                {
+                    // One of alternatives (druckerPrager: phi or mu), left
+                    // to the law: a NaN must not reach a comparison here,
+                    // which traps under FOAM_SIGFPE
+                    if (echo) Info<< "    " << key << " (not given) " << p.description.c_str() << nl;
+                    continue;
+                }
                 c[p.name] = p.defaultValue;
-                if (echo) Info<< "    " << key << " " << p.defaultValue
-                    << " (default) " << p.description.c_str() << nl;
+                if (echo)
+                {
+                    Info<< "    " << key << " " << p.defaultValue
+                        << " (default) " << p.description.c_str() << nl;
+                }
                 continue;
             }
             const scalar v = d.get<scalar>(key);
@@ -131,7 +143,8 @@ Foam::materialLibrary::materialLibrary(const dictionary& mpmDict, bool echo)
         // Let the law check combinations (e.g. dilatancy <= friction).
         try
         {
-            mpm::makeLaw(model, c);
+            const std::string note = mpm::makeLaw(model, c)->note();
+            if (echo && !note.empty()) Info<< "    " << note.c_str() << nl;
         }
         catch (const std::exception& ex)
         {
