@@ -76,17 +76,31 @@ open(p, "w").write(s)
 EOF
 }
 
+# slopeRun <name> <theta> <cells across> [sed on mpmProperties]: the sand
+# layer (4 cm, t = 0..0.5 s) on the tutorial's incline, run; prints its
+# directory, or nothing when it failed (the caller counts the failure: this
+# runs in a command substitution)
+slopeRun()
+{
+    local c
+    c=$(copyTutorial mpm/inclinedPlaneFlow "$1")
+    rm -rf "$c/run"
+    sandMaterial "$c/constant/mpmProperties"
+    [ -n "${4:-}" ] && sed -i -e "$4" "$c/constant/mpmProperties"
+    sed -i -e 's/^\( *material \).*;/\1 sand;/' "$c/system/mpmSetParticlesDict"
+    sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^writeInterval .*/writeInterval 0.1;/' "$c/system/controlDict"
+    if (cd "$c" && ./setCase "$2" "$3" 0.04 > log.setCase && blockMesh > log.blockMesh 2>&1 \
+        && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1); then
+        echo "$c"
+    else
+        echo "FAIL: run $1" >&2; tail -20 "$c/log.mpmFoam" >&2
+    fi
+}
+
 for theta in 25 26.5; do
     for nH in 4 16; do
-        c=$(copyTutorial mpm/inclinedPlaneFlow "theta${theta}_n$nH")
-        rm -rf "$c/run"
-        sandMaterial "$c/constant/mpmProperties"
-        sed -i -e 's/^\( *material \).*;/\1 sand;/' "$c/system/mpmSetParticlesDict"
-        sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^writeInterval .*/writeInterval 0.1;/' \
-            "$c/system/controlDict"
-        (cd "$c" && ./setCase "$theta" "$nH" 0.04 > log.setCase && blockMesh > log.blockMesh 2>&1 \
-            && mpmSetParticles > log.mpmSetParticles 2>&1 && mpmFoam > log.mpmFoam 2>&1) \
-            || { echo "FAIL: run theta = $theta, nH = $nH"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
+        c=$(slopeRun "theta${theta}_n$nH" "$theta" "$nH")
+        [ -n "$c" ] || { failures=$((failures + 1)); continue; }
         u=$(meanVelocity "$c")
         echo "theta = $theta deg, $nH cells across the layer: mean velocity [m/s] at t =" $u
         seededPoints "$c" "theta = $theta deg, nH = $nH: "
@@ -126,15 +140,8 @@ for delta in 0.0025 0.01 0.04; do
 done
 # 5. A rough friction floor: the material yields before the wall does
 for mu in 0.45 1.0; do
-    c=$(copyTutorial mpm/inclinedPlaneFlow "rough$mu")
-    rm -rf "$c/run"
-    sandMaterial "$c/constant/mpmProperties"
-    sed -i -e "s/^ *floor .*/    floor   { type friction; frictionCoefficient $mu; }/" "$c/constant/mpmProperties"
-    sed -i -e 's/^\( *material \).*;/\1 sand;/' "$c/system/mpmSetParticlesDict"
-    sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^writeInterval .*/writeInterval 0.1;/' "$c/system/controlDict"
-    (cd "$c" && ./setCase 30 8 0.04 > log.setCase) || { failures=$((failures + 1)); continue; }
-    runApps "$c" blockMesh mpmSetParticles mpmFoam \
-        || { echo "FAIL: run rough floor mu $mu"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
+    c=$(slopeRun "rough$mu" 30 8 "s/^ *floor .*/    floor   { type friction; frictionCoefficient $mu; }/")
+    [ -n "$c" ] || { failures=$((failures + 1)); continue; }
     u=$(meanVelocity "$c")
     acc=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u1 - u0)/(t1 - t0)}')
     mub=$(awk -v m="$mu" -v e="$eta" 'BEGIN {print m < e ? m : e}')
@@ -148,15 +155,8 @@ for mu in 0.45 1.0; do
 done
 # 6. The friction as mu, the coefficient mobilised in simple shear
 for theta in 26 28; do
-    c=$(copyTutorial mpm/inclinedPlaneFlow "mu0.5_theta$theta")
-    rm -rf "$c/run"
-    sandMaterial "$c/constant/mpmProperties"
-    sed -i -e 's/phi 30;/mu 0.5;/' "$c/constant/mpmProperties"
-    sed -i -e 's/^\( *material \).*;/\1 sand;/' "$c/system/mpmSetParticlesDict"
-    sed -i -e 's/^endTime .*/endTime 0.5;/' -e 's/^writeInterval .*/writeInterval 0.1;/' "$c/system/controlDict"
-    (cd "$c" && ./setCase "$theta" 8 0.04 > log.setCase) || { failures=$((failures + 1)); continue; }
-    runApps "$c" blockMesh mpmSetParticles mpmFoam \
-        || { echo "FAIL: run mu 0.5 at $theta deg"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
+    c=$(slopeRun "mu0.5_theta$theta" "$theta" 8 's/phi 30;/mu 0.5;/')
+    [ -n "$c" ] || { failures=$((failures + 1)); continue; }
     u=$(meanVelocity "$c")
     echo "mu 0.5, theta = $theta deg: mean velocity [m/s] at t =" $u
     if [ "$theta" = 26 ]; then
