@@ -37,7 +37,7 @@ silo()
     rm -rf "$c/runs"
     (
         cd "$c" || exit 1
-        "$PY" siloMesh.py --width 0.6 --height 0.84 --slot 0.2 --cell 0.02
+        "$PY" -m slotMesh --width 0.6 --height 0.84 --slot 0.2 --cell 0.02
         foamDictionary -entry endTime -set "$3" system/controlDict > /dev/null
         foamDictionary -entry writeInterval -set "$3" system/controlDict > /dev/null
         foamDictionary -entry regions.fill.max -set "(0.6 0.8 0.02)" system/mpmSetParticlesDict > /dev/null

@@ -48,9 +48,9 @@ def slab(case):
 
 
 def silo(case):
-    """Silo width and slot width, from siloMesh.py's header line."""
+    """Silo width and slot width, from slotMesh's header line."""
     text = open(os.path.join(case, "system", "blockMeshDict")).read()
-    m = re.search(r"silo W = ([0-9.eE+-]+), H = [0-9.eE+-]+, slot D = ([0-9.eE+-]+)", text)
+    m = re.search(r"box W = ([0-9.eE+-]+), H = [0-9.eE+-]+, slot D = ([0-9.eE+-]+)", text)
     return float(m.group(1)), float(m.group(2))
 
 

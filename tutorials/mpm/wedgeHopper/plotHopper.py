@@ -48,7 +48,7 @@ F_BROWN = np.sqrt(THETA/np.sin(THETA)**2)/np.sqrt(np.pi/2)
 
 
 def geometry(case):
-    """Box width, slot width D and cell size h from hopperMesh.py's header."""
+    """Box width, slot width D and cell size h from slotMesh's header."""
     text = open(os.path.join(case, "system", "blockMeshDict")).read()
     m = re.search(r"box W = ([0-9.eE+-]+), H = [0-9.eE+-]+, slot D = ([0-9.eE+-]+), h = ([0-9.eE+-]+)", text)
     return float(m.group(1)), float(m.group(2)), float(m.group(3))
