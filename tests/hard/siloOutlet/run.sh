@@ -20,7 +20,7 @@ c=$(copyTutorial mpm/siloDischarge silo)
 rm -rf "$c/runs"
 (
     cd "$c" || exit 1
-    "$PY" siloMesh.py --width 0.6 --height 0.84 --slot 0.2 --cell 0.02
+    "$PY" -m slotMesh --width 0.6 --height 0.84 --slot 0.2 --cell 0.02
     foamDictionary -entry endTime -set 1 system/controlDict > /dev/null
     foamDictionary -entry writeInterval -set 0.25 system/controlDict > /dev/null
     foamDictionary -entry writeFormat -set ascii system/controlDict > /dev/null   # checkRun reads ASCII
