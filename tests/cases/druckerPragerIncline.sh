@@ -40,6 +40,11 @@
 #     holds at 26 deg (tan = 0.488 < 0.5) and flows at 28 deg (tan = 0.532),
 #     within [0.5, 1] of the rigid block's g (sin - 0.5 cos); the log says
 #     phi = 31.48 deg in the plane-strain match.
+#  7. (issue 29) the same on a level-set wall: the bed an obstacle plane at
+#     y = 0.0205 m (4 cells above the box floor, now slip, out of the
+#     stencil's reach), 30 deg: friction 0.45 slides at g (sin - 0.45 cos),
+#     friction 1.0 at g (sin - eta cos), within 2 % (before the cap: 0.54
+#     and slowing).
 # A law that mobilised tan(phi) = 0.577 (30 deg) or the Mohr-Coulomb
 # sin(phi) = 0.5 (26.57 deg) would not flow at 26.5 deg; a friction below
 # 0.466 would flow at 25 deg. ~15 s.
@@ -171,6 +176,17 @@ for theta in 26 28; do
         check "mu 0.5 at 28 deg (tan 0.532 > 0.5): it flows, acceleration / rigid block in [0.5, 1]" \
             "0.5 <= r <= 1" r="$ratio"
     fi
+done
+# 7. A level-set friction wall: the cap holds there too
+for mu in 0.45 1.0; do
+    c=$(slopeRun "plane$mu" 30 8 "s/^ *floor .*/    floor   { type slip; }/; \$a obstacles { bed { shape plane; point (0 0.0205 0); normal (0 1 0); type friction; frictionCoefficient $mu; } }")
+    [ -n "$c" ] || { failures=$((failures + 1)); continue; }
+    u=$(meanVelocity "$c")
+    acc=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u1 - u0)/(t1 - t0)}')
+    ref=$(awk -v m="$mu" -v e="$eta" 'BEGIN {m = m < e ? m : e; r = 30*atan2(0, -1)/180; print 9.81*(sin(r) - m*cos(r))}')
+    echo "30 deg, level-set plane friction $mu: acceleration $acc m/s^2 (reference $ref)"
+    check "30 deg on a level-set friction plane mu_w = $mu: acceleration g (sin - min(mu_w, eta) cos) within 2 %" \
+        "abs(a/r - 1) <= 0.02" a="$acc" r="$ref"
 done
 [ -n "${acc4:-}" ] && [ -n "${acc16:-}" ] && check "26.5 deg: 4-cell and 16-cell layers accelerate alike (within 25 %)" \
     "abs(a - b)/b < 0.25" a="$acc4" b="$acc16"

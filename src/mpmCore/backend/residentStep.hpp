@@ -32,6 +32,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <limits>
 #include <vector>
 
 namespace mpm {
@@ -55,6 +56,9 @@ struct ResidentConfig
     std::vector<std::pair<Index, Index>> periodicCopies;   // Boundary's
     std::vector<LawParams> laws;
     std::vector<Real> invRho0;
+    // The largest friction coefficient of level-set friction walls
+    // (MpmSystem::computeFrictionCap; the box walls' are capped in ghosts)
+    Real frictionCap = std::numeric_limits<Real>::infinity();
 };
 
 // The scalars a step hands back

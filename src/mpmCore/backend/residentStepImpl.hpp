@@ -161,8 +161,8 @@ struct FrictionNodes
 
 struct LevelSetNode
 {
-    LevelSetView ls; const Real* mass; Real* v[3]; Real tol;
-    MPM_HOST_DEVICE void operator()(Index I) const { levelSetWallNode(ls, mass, v, tol, I); }
+    LevelSetView ls; const Real* mass; Real* v[3]; Real tol; Real muCap;
+    MPM_HOST_DEVICE void operator()(Index I) const { levelSetWallNode(ls, mass, v, tol, I, muCap); }
 };
 
 // Ghost folds (MpmSystem::foldScalar, foldVector): every ghost added into
@@ -596,7 +596,7 @@ private:
         }
         if (ls_)
         {
-            LevelSetNode w{ls_, g_.mass, {v[0], v[1], v[2]}, tol};
+            LevelSetNode w{ls_, g_.mass, {v[0], v[1], v[2]}, tol, c_.frictionCap};
             Exec::forEach(g_.n, w, "the level-set wall kernel");
         }
         fillGhosts(v);

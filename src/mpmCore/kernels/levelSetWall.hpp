@@ -18,9 +18,11 @@ namespace mpm {
 // impulse per unit mass in this step), never reversing it. Summed over the
 // nodes in contact, the normal impulse is the load the wall carries, so a
 // body sliding on a level-set wall feels mu times its normal load.
+// muCap: the largest friction coefficient applied (MpmSystem::frictionCap_:
+// a wall rougher than the material holds it as the material's own friction)
 MPM_HOST_DEVICE inline void levelSetWallNode
 (
-    const LevelSetView& ls, const Real* mass, Real* const v[3], Real massTolerance, Index I
+    const LevelSetView& ls, const Real* mass, Real* const v[3], Real massTolerance, Index I, Real muCap
 )
 {
     if (!(ls.phi[I] < ls.contact) || mass[I] <= massTolerance) return;
@@ -41,7 +43,7 @@ MPM_HOST_DEVICE inline void levelSetWallNode
     if (ls.type[w] == int(WallType::friction))
     {
         const Real ut = std::sqrt(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]);
-        const Real du = -ls.mu[w]*un;
+        const Real du = -(ls.mu[w] < muCap ? ls.mu[w] : muCap)*un;
         const Real scale = ut > du ? 1 - du/ut : 0;
         for (int d = 0; d < 3; ++d) u[d] *= scale;
     }

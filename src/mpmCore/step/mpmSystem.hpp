@@ -388,7 +388,9 @@ private:
     // Per node and wall axis: 1 where a friction wall's image sticks this
     // step (decideFrictionStick)
     std::array<std::vector<Real>, 3> wallStuck_;
-    Real frictionCap_ = std::numeric_limits<Real>::infinity();   // this step's computeFrictionCap
+    // this step's computeFrictionCap (decideWallContact), for box and
+    // level-set friction walls
+    Real frictionCap_ = std::numeric_limits<Real>::infinity();
 
     // Scratch for the consistent-mass sweeps: per point and per node.
     std::array<std::vector<Real>, 3> pointScratch_;

@@ -100,6 +100,7 @@ void MpmSystem::stepResident(Real dt)
         const Real cap = computeFrictionCap();
         for (auto& g : full.ghosts) if (g.mu > 0) g.mu = std::min(g.mu, cap);
         for (auto& f : full.frictionNodes) f.mu = std::min(f.mu, cap);
+        full.frictionCap = cap;
         full.periodicCopies = boundary_.periodicCopies();
         for (int a = 0; a < 3; ++a) full.periodic[a] = boundary_.periodic(a);
         r.configure(full);

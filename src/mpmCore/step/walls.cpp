@@ -70,6 +70,10 @@ void MpmSystem::decideWallContact(Real dt, bool withForce)
         const bool contact = trial[gh.unilateralAxis][gh.image]*gh.outward >= 0;
         if (!contact) ghostSign_[k][gh.unilateralAxis] = 1.0;
     }
+    // The friction walls' cap for this step, box and level-set walls alike
+    bool friction = boundary_.hasFriction();
+    for (const auto& w : levelSet_.walls()) friction = friction || w.condition.type == WallType::friction;
+    if (friction) frictionCap_ = computeFrictionCap();
     decideFrictionStick(dt, withForce);
 }
 
@@ -109,8 +113,7 @@ void MpmSystem::decideFrictionStick(Real dt, bool withForce)
     const auto& ghosts = boundary_.ghosts();
     const auto& active = region_.ghosts();
     for (auto& a : wallStuck_) a.assign(lattice_.nNodes, 0.0);
-    frictionCap_ = computeFrictionCap();
-    const Real cap = frictionCap_;
+    const Real cap = frictionCap_;   // decideWallContact
     const GridView g = gridView(grid_);
     const Real gravity[3] = {options_.gravity[0], options_.gravity[1], options_.gravity[2]};
     for (const Index k : active)
@@ -225,7 +228,8 @@ void MpmSystem::applyLevelSetWalls(std::array<std::vector<Real>, 3>& v)
     Real* const vp[3] = {v[0].data(), v[1].data(), v[2].data()};
     const Real* m = grid_.mass.data();
     const Real tol = massTolerance_;
-    forEachActiveNode([&](Index I) { levelSetWallNode(ls, m, vp, tol, I); });
+    const Real cap = frictionCap_;   // this step's (decideWallContact)
+    forEachActiveNode([&](Index I) { levelSetWallNode(ls, m, vp, tol, I, cap); });
 }
 
 } // namespace mpm
