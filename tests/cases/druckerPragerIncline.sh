@@ -81,6 +81,11 @@ open(p, "w").write(s)
 EOF
 }
 
+# meanAcceleration: "t u" lines (meanVelocity) -> (u_last - u_first)/(t_last - t_first)
+meanAcceleration() { awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u1 - u0)/(t1 - t0)}'; }
+# rigidBlock THETA MU: g (sin(theta) - mu cos(theta)), a block sliding with friction mu
+rigidBlock() { awk -v t="$1" -v m="$2" 'BEGIN {r = t*atan2(0, -1)/180; print 9.81*(sin(r) - m*cos(r))}'; }
+
 # slopeRun <name> <theta> <cells across> [sed on mpmProperties]: the sand
 # layer (4 cm, t = 0..0.5 s) on the tutorial's incline, run; prints its
 # directory, or nothing when it failed (the caller counts the failure: this
@@ -114,10 +119,8 @@ for theta in 25 26.5; do
             check "theta = 25 deg < atan(eta), nH = $nH: the layer holds (max |mean u| < 1e-3 m/s)" \
                 "u < 1e-3" u="$umax"
         else
-            read -r acc <<< "$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2}
-                END {print (u1 - u0)/(t1 - t0)}')"
-            ratio=$(awk -v a="$acc" -v e="$eta" -v t="$theta" 'BEGIN {
-                r = t*atan2(0, -1)/180; print a/(9.81*(sin(r) - e*cos(r))) }')
+            acc=$(echo "$u" | meanAcceleration)
+            ratio=$(awk -v a="$acc" -v r="$(rigidBlock "$theta" "$eta")" 'BEGIN {print a/r}')
             echo "theta = $theta deg, nH = $nH: mean acceleration $acc m/s^2, $ratio of the rigid block's"
             check "theta = 26.5 deg > atan(eta), nH = $nH: it flows, acceleration / rigid block in [0.5, 1]" \
                 "0.5 <= r <= 1" r="$ratio"
@@ -138,22 +141,29 @@ for delta in 0.0025 0.01 0.04; do
     runApps "$c" blockMesh mpmSetParticles mpmFoam \
         || { echo "FAIL: run slide, layer $delta m"; tail -20 "$c/log.mpmFoam"; failures=$((failures + 1)); continue; }
     u=$(meanVelocity "$c")
-    ratio=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u0 - u1)/(t1 - t0)/(0.45*9.81)}')
+    ratio=$(awk -v a="$(echo "$u" | meanAcceleration)" 'BEGIN {print -a/(0.45*9.81)}')
     echo "layer $delta m on the friction floor: mean velocity [m/s] at t =" $u
     check "layer $delta m thick (h = 0.005 m) on a mu = 0.45 floor decelerates at mu g within 2 %" \
         "abs(r - 1) <= 0.02" r="$ratio"
 done
+# slidesAtCoulomb <case> <mu_w> <wall>: on the 30 deg slope the layer
+# accelerates at g (sin - min(mu_w, eta) cos) within 2 % (sections 5, 7)
+slidesAtCoulomb()
+{
+    local u acc ref
+    u=$(meanVelocity "$1")
+    acc=$(echo "$u" | meanAcceleration)
+    ref=$(rigidBlock 30 "$(awk -v m="$2" -v e="$eta" 'BEGIN {print m < e ? m : e}')")
+    echo "30 deg, $3 mu $2: mean velocity [m/s] at t =" $u "; acceleration $acc m/s^2 (reference $ref)"
+    check "30 deg on a $3 mu_w = $2: acceleration g (sin - min(mu_w, eta) cos) within 2 %" \
+        "abs(a/r - 1) <= 0.02" a="$acc" r="$ref"
+}
+
 # 5. A rough friction floor: the material yields before the wall does
 for mu in 0.45 1.0; do
     c=$(slopeRun "rough$mu" 30 8 "s/^ *floor .*/    floor   { type friction; frictionCoefficient $mu; }/")
     [ -n "$c" ] || { failures=$((failures + 1)); continue; }
-    u=$(meanVelocity "$c")
-    acc=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u1 - u0)/(t1 - t0)}')
-    mub=$(awk -v m="$mu" -v e="$eta" 'BEGIN {print m < e ? m : e}')
-    ref=$(awk -v m="$mub" 'BEGIN {r = 30*atan2(0, -1)/180; print 9.81*(sin(r) - m*cos(r))}')
-    echo "30 deg, friction floor mu $mu: mean velocity [m/s] at t =" $u "; acceleration $acc m/s^2 (reference $ref)"
-    check "30 deg on a friction floor mu_w = $mu: acceleration g (sin - min(mu_w, eta) cos) within 2 %" \
-        "abs(a/r - 1) <= 0.02" a="$acc" r="$ref"
+    slidesAtCoulomb "$c" "$mu" "friction floor"
     [ "$mu" = 1.0 ] && { grep -h "^Friction walls:" "$c/log.mpmFoam" \
         && echo "PASS: the log says the rough wall acts as the material's friction" \
         || { echo "FAIL: no 'Friction walls:' line in the log"; failures=$((failures + 1)); }; }
@@ -171,8 +181,7 @@ for theta in 26 28; do
             && echo "PASS: the log says which friction is in force" \
             || { echo "FAIL: no 'mu 0.5 in simple shear' line in the log"; failures=$((failures + 1)); }
     else
-        ratio=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {
-            r = 28*atan2(0, -1)/180; print (u1 - u0)/(t1 - t0)/(9.81*(sin(r) - 0.5*cos(r)))}')
+        ratio=$(awk -v a="$(echo "$u" | meanAcceleration)" -v r="$(rigidBlock 28 0.5)" 'BEGIN {print a/r}')
         check "mu 0.5 at 28 deg (tan 0.532 > 0.5): it flows, acceleration / rigid block in [0.5, 1]" \
             "0.5 <= r <= 1" r="$ratio"
     fi
@@ -181,12 +190,7 @@ done
 for mu in 0.45 1.0; do
     c=$(slopeRun "plane$mu" 30 8 "s/^ *floor .*/    floor   { type slip; }/; \$a obstacles { bed { shape plane; point (0 0.0205 0); normal (0 1 0); type friction; frictionCoefficient $mu; } }")
     [ -n "$c" ] || { failures=$((failures + 1)); continue; }
-    u=$(meanVelocity "$c")
-    acc=$(echo "$u" | awk 'NR == 1 {t0 = $1; u0 = $2} {t1 = $1; u1 = $2} END {print (u1 - u0)/(t1 - t0)}')
-    ref=$(awk -v m="$mu" -v e="$eta" 'BEGIN {m = m < e ? m : e; r = 30*atan2(0, -1)/180; print 9.81*(sin(r) - m*cos(r))}')
-    echo "30 deg, level-set plane friction $mu: acceleration $acc m/s^2 (reference $ref)"
-    check "30 deg on a level-set friction plane mu_w = $mu: acceleration g (sin - min(mu_w, eta) cos) within 2 %" \
-        "abs(a/r - 1) <= 0.02" a="$acc" r="$ref"
+    slidesAtCoulomb "$c" "$mu" "level-set friction plane"
 done
 [ -n "${acc4:-}" ] && [ -n "${acc16:-}" ] && check "26.5 deg: 4-cell and 16-cell layers accelerate alike (within 25 %)" \
     "abs(a - b)/b < 0.25" a="$acc4" b="$acc16"

@@ -192,6 +192,9 @@ public:
     // The largest friction coefficient a friction wall applies: the largest
     // shear strength ratio of the materials that have points (walls.cpp)
     Real computeFrictionCap() const;
+    // The largest coefficient of the friction walls, box and level-set
+    // walls alike; 0 without friction walls
+    Real largestWallFriction() const;
     const ConstitutiveLaw& material(int m) const { return *materials_[m]; }
 
     // Advances by dt. Throws NonFiniteError on NaN/inf.

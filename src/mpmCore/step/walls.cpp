@@ -71,10 +71,22 @@ void MpmSystem::decideWallContact(Real dt, bool withForce)
         if (!contact) ghostSign_[k][gh.unilateralAxis] = 1.0;
     }
     // The friction walls' cap for this step, box and level-set walls alike
-    bool friction = boundary_.hasFriction();
-    for (const auto& w : levelSet_.walls()) friction = friction || w.condition.type == WallType::friction;
-    if (friction) frictionCap_ = computeFrictionCap();
+    if (largestWallFriction() > 0) frictionCap_ = computeFrictionCap();
     decideFrictionStick(dt, withForce);
+}
+
+Real MpmSystem::largestWallFriction() const
+{
+    Real most = 0;
+    for (const auto& wc : boundary_.spec().conditions)
+    {
+        if (wc.type == WallType::friction) most = std::max(most, wc.frictionCoefficient);
+    }
+    for (const auto& w : levelSet_.walls())
+    {
+        if (w.condition.type == WallType::friction) most = std::max(most, w.condition.frictionCoefficient);
+    }
+    return most;
 }
 
 // A friction wall holds the material at most as hard as the material's own

@@ -135,15 +135,7 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
         // A friction wall rougher than the material holds it only as hard
         // as the material's own friction (MpmSystem::computeFrictionCap):
         // box walls, mesh patches off the box and obstacles alike
-        scalar most = 0;
-        for (const auto& wc : system_.boundary().spec().conditions)
-        {
-            if (wc.type == mpm::WallType::friction) most = max(most, wc.frictionCoefficient);
-        }
-        for (const auto& w : system_.levelSetWalls().walls())
-        {
-            if (w.condition.type == mpm::WallType::friction) most = max(most, w.condition.frictionCoefficient);
-        }
+        const scalar most = system_.largestWallFriction();
         const scalar cap = most > 0 ? system_.computeFrictionCap() : GREAT;
         if (most > cap)
         {
