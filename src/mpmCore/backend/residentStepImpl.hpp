@@ -403,6 +403,7 @@ public:
         ls_.type = lsInt_.data() + nNodes;
         ls_.band = h.band;
         ls_.contact = h.contact;
+        ls_.normalHold = h.normalHold;
     }
 
     void uploadPoints(const PointView& host) override

@@ -164,9 +164,16 @@ std::string BoxShape::describe() const
 
 void LevelSetWalls::build
 (
-    const Lattice& L, std::vector<LevelSetWall> walls, const Vec& unsolved, Real contact
+    const Lattice& L, std::vector<LevelSetWall> walls, const Vec& unsolved, Real contact,
+    const Lattice* domain
 )
 {
+    const Lattice& D = domain ? *domain : L;
+    for (int a = 0; a < 3; ++a)
+    {
+        domainLo_[a] = D.origin[a];
+        domainHi_[a] = D.origin[a] + D.nCells[a]*D.h;
+    }
     walls_ = std::move(walls);
     contact_ = contact;
     type_.clear();
@@ -206,6 +213,9 @@ void LevelSetWalls::build
     // Nodes further than a few cells from every wall need only the sign:
     // the widest stencil (CBS) reaches two cells, a point's planes one more.
     band_ = 4*L.h;
+    // A noSlip wall holds the normal velocity of the nodes within one cell
+    // outside it (kernels/levelSetWall.hpp says why)
+    normalHold_ = L.h;
     unsolved_ = unsolved;
     for (auto& a : velocity_) a.assign(walls_.size(), 0.0);
     displacement_.assign(walls_.size(), Vec{0, 0, 0});
@@ -239,9 +249,26 @@ void LevelSetWalls::computeNodes(const Lattice& L)
     {
         const int idx[3] = {int(I % L.nodes[0]), int((I/L.nodes[0]) % L.nodes[1]), int(I/L.stride[2])};
         Real x[3];
+        bool beyondBox = false;
         for (int a = 0; a < 3; ++a)
         {
             x[a] = L.solved[a] ? L.origin[a] + (idx[a] - L.padOf(a) + 0.5)*L.h : unsolved[a];
+            beyondBox = beyondBox || (L.solved[a] && (x[a] < domainLo_[a] || x[a] > domainHi_[a]));
+        }
+        // The ghost layers beyond the domain lattice's box belong to the
+        // box's own conditions (mirrored walls, open or periodic faces),
+        // which set them after the level-set condition. As level-set nodes
+        // they would lie outside the mesh, hence inside its patches' wall
+        // (negative), with the plane of whatever level-set patch is
+        // nearest: beside a box face kept as a mirrored wall, that plane
+        // pushed the points next to the face up to a band's width along
+        // it (a bed under a pier on a snappyHexMesh). Outside every wall.
+        if (beyondBox)
+        {
+            phi_[I] = band_;
+            for (int a = 0; a < 3; ++a) normal_[a][I] = 0;
+            wall_[I] = 0;
+            continue;
         }
         Real bestN[3] = {0, 0, 0};
         int bestW = 0;
@@ -268,6 +295,7 @@ LevelSetView LevelSetWalls::view() const
     v.mu = mu_.data();
     v.band = band_;
     v.contact = contact_;
+    v.normalHold = normalHold_;
     for (int a = 0; a < 3; ++a) v.velocity[a] = velocity_[a].data();
     return v;
 }

@@ -123,6 +123,7 @@ struct LevelSetView
     const Real* mu = nullptr;           // per wall: Coulomb coefficient
     Real band = 0;                      // beyond it phi is only a bound
     Real contact = 0;                   // nodes with phi below it are held
+    Real normalHold = 0;                // noSlip: nodes with phi below it keep the wall's normal velocity
     const Real* velocity[3] = {};       // per wall: its velocity (moving)
     MPM_HOST_DEVICE explicit operator bool() const { return phi != nullptr; }
 };
@@ -137,10 +138,12 @@ public:
     // specCondition), or without a shape.
     // contact: nodes with phi below it get the wall condition (0: the
     // nodes inside the walls; see MpmSystem::setLevelSetWalls).
+    // domain: the whole (undecomposed) lattice, whose box's ghost layers
+    // are no level-set nodes (computeNodes says why); by default L.
     void build
     (
         const Lattice& L, std::vector<LevelSetWall> walls, const std::array<Real, 3>& unsolved,
-        Real contact = 0
+        Real contact = 0, const Lattice* domain = nullptr
     );
 
     bool empty() const { return walls_.empty(); }
@@ -180,9 +183,11 @@ private:
     std::vector<Real> mu_;
     Real band_ = 0;
     Real contact_ = 0;
+    Real normalHold_ = 0;
     Index nInside_ = 0;
     bool hasOutlets_ = false;
     std::array<Real, 3> unsolved_{0, 0, 0};
+    std::array<Real, 3> domainLo_{0, 0, 0}, domainHi_{0, 0, 0};   // the domain lattice's box
     std::vector<std::array<Real, 3>> displacement_;
     std::array<std::vector<Real>, 3> velocity_;
     void computeNodes(const Lattice& L);

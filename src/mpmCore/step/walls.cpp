@@ -218,7 +218,7 @@ void MpmSystem::setLevelSetWalls(std::vector<LevelSetWall> walls, const std::arr
     // node layer). Linear hats therefore also hold the nodes within half a
     // cell outside the wall: an effective wall up to h/2 thicker.
     const Real contact = options_.shape == ShapeKind::linearHat ? 0.5*lattice_.h : 0.0;
-    levelSet_.build(lattice_, std::move(walls), unsolved, contact);
+    levelSet_.build(lattice_, std::move(walls), unsolved, contact, &domain_);
     contained_ = 0;
     levelSetChanged_ = true;
 }
