@@ -153,3 +153,61 @@ def plot_parser(description=None):
     ap.add_argument("--case", default=".")
     ap.add_argument("--no-plot", action="store_true")
     return ap
+
+
+def richardson(values, ratio=2.0):
+    """Richardson extrapolation of one result from grids refined by a
+    constant ratio, with Roache's grid convergence index as its error band.
+
+    values: the result on each grid, coarsest first (at least three). The
+    last three give the observed order p = ln(e_coarse/e_fine)/ln(ratio),
+    where e_coarse and e_fine are the changes over the two refinements, and
+    the limit f_fine + e_fine/(ratio^p - 1). The band is f_fine +- GCI with
+    GCI = Fs |limit - f_fine|: Fs = 1.25 when p lies in [0.5, 2.5] (three
+    grids that confirm an order), otherwise 3 (Roache 1998, ch. 5: an order
+    the grids do not confirm is not trusted). With four or more values the
+    order of the previous three is returned too (p_previous): an order that
+    moves between the triples says the grids are not yet asymptotic.
+
+    Returns a dict: status ('converging', 'oscillating' or 'diverging'),
+    previous_status and p_previous (the coarser triple's; None with three
+    values), and, when converging, p, limit, gci, fs and band (lo, hi). Oscillating or diverging changes have no
+    extrapolation: the caller says so instead of printing a number.
+    """
+    f = [float(v) for v in values]
+    if len(f) < 3:
+        raise ValueError("richardson: needs at least three grids, got %d" % len(f))
+
+    def order(f1, f2, f3):
+        e21, e32 = f2 - f1, f3 - f2
+        if e21*e32 <= 0:
+            return "oscillating", None
+        if abs(e32) >= abs(e21):
+            return "diverging", None
+        return "converging", np.log(e21/e32)/np.log(ratio)
+
+    status, p = order(*f[-3:])
+    result = {"status": status, "p_previous": None, "previous_status": None}
+    if len(f) >= 4:
+        result["previous_status"], result["p_previous"] = order(*f[-4:-1])
+    if status != "converging":
+        return result
+    limit = f[-1] + (f[-1] - f[-2])/(ratio**p - 1)
+    fs = 1.25 if 0.5 <= p <= 2.5 else 3.0
+    gci = fs*abs(limit - f[-1])
+    result.update(p=p, limit=limit, fs=fs, gci=gci, band=(f[-1] - gci, f[-1] + gci))
+    return result
+
+
+def richardson_line(values, ratio=2.0, fmt="%.3f"):
+    """One line saying what richardson() found, for the tutorials' tables."""
+    r = richardson(values, ratio)
+    if r["status"] != "converging":
+        return "%s over the last three grids: no extrapolation" % r["status"]
+    line = ("observed order p = %.2f, Richardson limit " + fmt + ", band " + fmt + " .. " + fmt
+            + " (GCI, Fs = %g)") % (r["p"], r["limit"], r["band"][0], r["band"][1], r["fs"])
+    if r["p_previous"] is not None:
+        line += "; the coarser triple gives p = %.2f" % r["p_previous"]
+    elif r["previous_status"] is not None:
+        line += "; the coarser triple is %s" % r["previous_status"]
+    return line

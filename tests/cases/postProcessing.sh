@@ -74,4 +74,25 @@ a = mpmPost.read_cloud_field('$c', '$last.orig', 'mass'); b = mpmPost.read_cloud
 print(abs(a.sum() - b.sum())/a.sum() if len(a) == len(b) else 1)")
 check "reconstructPar restores the cloud (total mass)" "d <= 1e-12" d="$d"
 
+# mpmPost.richardson, which the tutorials' convergence tables print
+# (granularColumnCollapse/plotRunout.py, siloDischarge/plotDischarge.py):
+# f(h) = 1 + C h^p on halved grids must give back p and the limit 1; a
+# second-order term (f = 1 + h + 3 h^2) must leave the true limit inside
+# the band; oscillating or growing changes must give no extrapolation.
+r=$("$PY" -c "
+import mpmPost
+out = []
+for p in (1.0, 2.0, 0.7):
+    r = mpmPost.richardson([1 + 0.3*h**p for h in (0.4, 0.2, 0.1)])
+    out += [abs(r['p'] - p), abs(r['limit'] - 1)]
+r = mpmPost.richardson([1 + h + 3*h*h for h in (0.2, 0.1, 0.05, 0.025)])
+inside = r['band'][0] <= 1 <= r['band'][1] and r['p_previous'] is not None
+print(max(out), int(inside), mpmPost.richardson([1, 2, 1.5])['status'], mpmPost.richardson([1, 1.1, 1.3])['status'])")
+read -r err inside osc div <<< "$r"
+echo "richardson: $r"
+check "richardson recovers the order and limit of f = 1 + C h^p (p = 1, 2, 0.7)" "e <= 1e-9" e="$err"
+check "richardson's band holds the limit of f = 1 + h + 3 h^2" "i == 1" i="$inside"
+[ "$osc $div" = "oscillating diverging" ] && echo "PASS: richardson refuses oscillating and growing changes" \
+    || { echo "FAIL: richardson status '$osc $div'"; failures=$((failures + 1)); }
+
 finish

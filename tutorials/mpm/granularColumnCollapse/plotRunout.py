@@ -14,6 +14,9 @@ and the change of the runout when the cell size halves, and writes
 runoutVsAspectRatio.png. It also prints the fronts behind which 90, 95, 98,
 99, 99.5 and 99.9 % of the mass lie, and their change per halving: they show
 whether the whole deposit or only its thinnest tip moves with the cell size.
+Where three or more runs halve the cell size in turn, it prints each
+measure's observed order, Richardson limit and error band
+(mpmPost.richardson).
 Usage: plotRunout.py RUN... [--no-plot]
 """
 import math
@@ -74,6 +77,17 @@ def halvings(by_h):
             for (h1, v1), (h2, v2) in zip(by_h, by_h[1:]) if abs(h1/h2 - 2) < 1e-6]
 
 
+def halving_chain(rows):
+    """The longest run of rows (coarsest first, r[2] the cell size) whose cell
+    size halves from one to the next, ending at the finest."""
+    chain = rows[-1:]
+    for r in reversed(rows[:-1]):
+        if abs(r[2]/chain[0][2] - 2) > 1e-6:
+            break
+        chain.insert(0, r)
+    return chain
+
+
 def main():
     runs = [r for r in sys.argv[1:] if not r.startswith("--")]
     rows = []
@@ -115,6 +129,20 @@ def main():
             for h1, h2, _, _, changes in halvings(mine):
                 print("  %-22s %5g %13s " % (law, a, "%g->%g" % (h1, h2))
                       + " ".join("%+7.1f%%" % (100*c) for c in changes))
+
+    # Where three or more grids halve the cell size in turn: the observed
+    # order, the Richardson limit and its error band (issue 29, validation 4).
+    print("Richardson extrapolation over halvings of the cell size (mpmPost.richardson):")
+    for law in sorted({r[0] for r in rows}):
+        for a in sorted({r[1] for r in rows if r[0] == law}):
+            mine = sorted((r for r in rows if r[0] == law and r[1] == a), key=lambda r: -r[2])
+            chain = halving_chain(mine)
+            if len(chain) < 3:
+                continue
+            for name, value in (("runout", lambda r: r[3]), ("front90", lambda r: r[5][0]),
+                                ("travel", lambda r: r[4])):
+                print("  %-16s a = %-4g %-8s h %s: %s" % (law, a, name, " ".join("%g" % r[2] for r in chain),
+                      mpmPost.richardson_line([value(r) for r in chain])))
 
     if "--no-plot" in sys.argv:
         return

@@ -23,8 +23,8 @@ Writes rate.png and beverloo.png (unless --no-plot) and prints the table.
 
 --convergence: the cases are one slot at several cell sizes (Allrun
 convergence); per shape function, C = W/(rho sqrt(g) D^1.5) at each h, its
-change on each cell halving, the observed order p = log2(dC_coarse/dC_fine)
-of the last three and the Richardson value C_f + dC_f/(2^p - 1);
+change on each cell halving, and over the last three the observed order, the
+Richardson value and its GCI band (mpmPost.richardson);
 convergence.png (C against D/h).
 Usage: plotDischarge.py [case ...] [--no-plot] [--convergence]
 """
@@ -119,13 +119,7 @@ def convergence(cases):
             print("%-16s %6.3f %7.4f %5.0f %9.4g %7.3f %s %8d"
                   % (shape, r["D"], cell(r), r["D"]/cell(r), r["W"], Cs[i], change, r["clamped"]))
         if len(Cs) >= 3:
-            d1, d2 = Cs[-2] - Cs[-3], Cs[-1] - Cs[-2]
-            if d1*d2 > 0 and abs(d1) > abs(d2):
-                p = np.log2(d1/d2)
-                print("%-16s observed order p = log2(dC coarse/dC fine) = %.2f; Richardson C = %.3f"
-                      % (shape, p, Cs[-1] + d2/(2**p - 1)))
-            else:
-                print("%-16s not in the asymptotic range (changes %.3f then %.3f)" % (shape, d1, d2))
+            print("%-16s %s" % (shape, mpmPost.richardson_line(Cs)))
         curves[shape] = ([r["D"]/cell(r) for r in group], Cs)
     print("max |mass balance error|/initial mass over the runs: %.2g" % max(r["balance"] for r in runs))
     if "--no-plot" in sys.argv:
