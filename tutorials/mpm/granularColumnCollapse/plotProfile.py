@@ -126,7 +126,7 @@ def main():
         print("      plane-strain DEM, no side walls (Kumar 2015): 1.67 a = %.2f; this run / it = %.2f"
               % (ref, runout/ref))
     print("      not converged in the cell size: the runout grows on finer grids"
-          " (README, 'The finest grid at every aspect ratio')")
+          " (README, 'Richardson extrapolation': limits and error bands)")
     print("  final height H_f/a0 = %.3f  (H_f/h0 = %.3f)" % (height, Hf/h0))
     print("  final max |U| = %.3g m/s = %.3g sqrt(g h0)"
           % (s["maxU"][-1], s["maxU"][-1]/np.sqrt(9.81*h0)))
