@@ -20,16 +20,15 @@
 #  4. Level-set wall against the mirrored wall (issue 24): the fixed end as
 #     a noSlip obstacle plane at x = 0 inside a mesh that starts 5 cells
 #     earlier, lumped mass, 25, 50, 100 cells. A level-set noSlip wall holds
-#     the nodes behind it and the normal velocity of those within a cell in
-#     front (docs/geometry.md), where the mirror makes the velocity vanish
-#     on the wall plane itself: the two differ by O(h). Checked: the
+#     the nodes behind it and stops those within a cell in front from
+#     moving away (docs/geometry.md), where the mirror makes the velocity
+#     vanish on the wall plane itself: the two differ by O(h). Checked: the
 #     frequency against the mirrored run's within h/(2L) + 0.2 %, the
 #     difference falling at order >= 0.8, and the level-set frequency's
-#     error at 100 cells <= 0.6 %. Measured +0.46, +0.28, +0.15 % against
+#     error at 100 cells <= 0.6 %. Measured +0.33, +0.21, +0.12 % against
 #     -0.13, -0.03, -0.008 % mirrored. Holding only the nodes inside the
-#     wall (no normal band) gave <= -5 (the fit's bound), -4.6, -2.3 % and
-#     fails; so would a wall a cell off, or a slip wall (the bar would pull
-#     free).
+#     wall gave <= -5 (the fit's bound), -4.6, -2.3 % and fails; so would a
+#     wall a cell off, or a slip wall (the bar would pull free).
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 

@@ -213,8 +213,8 @@ void LevelSetWalls::build
     // Nodes further than a few cells from every wall need only the sign:
     // the widest stencil (CBS) reaches two cells, a point's planes one more.
     band_ = 4*L.h;
-    // A noSlip wall holds the normal velocity of the nodes within one cell
-    // outside it (kernels/levelSetWall.hpp says why)
+    // A noSlip wall stops the nodes within one cell outside it moving away
+    // from it (kernels/levelSetWall.hpp says why)
     normalHold_ = L.h;
     unsolved_ = unsolved;
     for (auto& a : velocity_) a.assign(walls_.size(), 0.0);

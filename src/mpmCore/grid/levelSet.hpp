@@ -123,7 +123,7 @@ struct LevelSetView
     const Real* mu = nullptr;           // per wall: Coulomb coefficient
     Real band = 0;                      // beyond it phi is only a bound
     Real contact = 0;                   // nodes with phi below it are held
-    Real normalHold = 0;                // noSlip: nodes with phi below it keep the wall's normal velocity
+    Real normalHold = 0;                // noSlip: nodes with phi below it do not move away from the wall
     const Real* velocity[3] = {};       // per wall: its velocity (moving)
     MPM_HOST_DEVICE explicit operator bool() const { return phi != nullptr; }
 };
