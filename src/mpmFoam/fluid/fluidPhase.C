@@ -101,6 +101,16 @@ Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
     alpha_.oldTime();   // keep the old fluid fraction for d(alphaF)/dt
     turbulence_ = turbulenceModel::New(alpha_, U_, alphaPhi_, phi_, transport_);
     setRefCell(p_, pimple.dict(), pRefCell_, pRefValue_);
+    {
+        // A hexahedron has six faces; a cell with another count is not one
+        label nonHex = 0;
+        forAll(mesh.cells(), celli) nonHex += mesh.cells()[celli].size() != 6;
+        reduce(nonHex, sumOp<label>());
+        cellGradientCorrection_ = nonHex > 0;
+        Info<< "Fluid: velocity correction from the "
+            << (cellGradientCorrection_ ? "cell pressure gradient (" : "face fluxes (fvc::reconstruct; ")
+            << nonHex << " cells are not hexahedra)" << nl;
+    }
     mesh.setFluxRequired(p_.name());
     Info<< "Fluid: rho " << rho_.value() << ", nu " << average(transport_.nu()).value()
         << " (constant/transportProperties)" << nl << endl;
@@ -191,7 +201,14 @@ void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
                 {
                     phi_ = phiHbyA - pEqn.flux()/alphaf;
                     p.relax();
-                    U = HbyA + rAU*fvc::reconstruct((phiForces - pEqn.flux()/alphaf)/rAUf);
+                    if (cellGradientCorrection_)
+                    {
+                        U = HbyA + rAU*(fvc::reconstruct(phiForces/rAUf) - alpha*fvc::grad(p));
+                    }
+                    else
+                    {
+                        U = HbyA + rAU*fvc::reconstruct((phiForces - pEqn.flux()/alphaf)/rAUf);
+                    }
                     U.correctBoundaryConditions();
                 }
             }
