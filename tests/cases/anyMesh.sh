@@ -132,7 +132,7 @@ walls
     sides { type slip; }
 }
 EOF
-printf 'FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location "constant"; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 0);\n' > "$r/constant/g"
+setGravity "$r"
 sed -i 's/^endTime .*/endTime 0.5;/; s/^writeInterval .*/writeInterval 0.1;/' "$r/system/controlDict"
 runApps "$r" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: rotated run"; tail -30 "$r/log.mpmFoam"; exit 1; }
 read -r acc out nt <<< "$("$PY" - "$r" <<'PYEOF'

@@ -34,11 +34,7 @@ cat > "$c/system/mpmSetParticlesDict" <<'DEOF'
 FoamFile { version 2.0; format ascii; class dictionary; object mpmSetParticlesDict; }
 regions { block { type box; min (0 0 0); max (1 1 1); material soil; pointsPerCell 2; } }
 DEOF
-cat > "$c/constant/g" <<'DEOF'
-FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
-dimensions [0 1 -2 0 0 0 0];
-value (0 0 -10);
-DEOF
+setGravity "$c" "(0 0 -10)"
 cat > "$c/constant/mpmProperties" <<'DEOF'
 FoamFile { version 2.0; format ascii; class dictionary; object mpmProperties; }
 shapeFunction quadraticBSpline; transfer PICFLIP; flipRatio 0; stressUpdate USL;

@@ -174,7 +174,7 @@ obstacles
     }
 }
 EOF
-printf 'FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location "constant"; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 0);\n' > "$gt/constant/g"
+setGravity "$gt"
 cat > "$gt/system/mpmSetParticlesDict" <<'EOF'
 FoamFile { version 2.0; format ascii; class dictionary; object mpmSetParticlesDict; }
 regions { column { type box; min (-0.2 -0.2 0); max (0.2 0.4 1); material sand; pointsPerCell (2 2 1); } }
@@ -227,7 +227,7 @@ bad pointsInside 'block { shape box; min (0.1 0.1 -1); max (0.3 0.3 2); }' "Mate
 # --- resting on a noSlip plane ----------------------------------------------
 for plane in -0.1 -0.0875; do
     d=$(copyTutorial mpm/elasticDisks rest$plane)
-    printf 'FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location "constant"; object g; }\ndimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 0);\n' > "$d/constant/g"
+    setGravity "$d"
     cat > "$d/system/mpmSetParticlesDict" <<'EOF'
 FoamFile { version 2.0; format ascii; class dictionary; object mpmSetParticlesDict; }
 regions { block { type box; min (0.3 0.3 -1); max (0.7 0.5 2); material disk; pointsPerCell (2 2 1); velocity { type uniform; value (0 -0.5 0); } } }
