@@ -38,6 +38,7 @@ bool Foam::fluidPhase::present(const fvMesh& mesh)
 Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
 :
     mesh_(mesh),
+    reconstruct_(mesh),
     U_
     (
         IOobject("U", mesh.time().timeName(), mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE),
@@ -101,16 +102,6 @@ Foam::fluidPhase::fluidPhase(fvMesh& mesh, const pimpleControl& pimple)
     alpha_.oldTime();   // keep the old fluid fraction for d(alphaF)/dt
     turbulence_ = turbulenceModel::New(alpha_, U_, alphaPhi_, phi_, transport_);
     setRefCell(p_, pimple.dict(), pRefCell_, pRefValue_);
-    {
-        // A hexahedron has six faces; a cell with another count is not one
-        label nonHex = 0;
-        forAll(mesh.cells(), celli) nonHex += mesh.cells()[celli].size() != 6;
-        reduce(nonHex, sumOp<label>());
-        cellGradientCorrection_ = nonHex > 0;
-        Info<< "Fluid: velocity correction from the "
-            << (cellGradientCorrection_ ? "cell pressure gradient (" : "face fluxes (fvc::reconstruct; ")
-            << nonHex << " cells are not hexahedra)" << nl;
-    }
     mesh.setFluxRequired(p_.name());
     Info<< "Fluid: rho " << rho_.value() << ", nu " << average(transport_.nu()).value()
         << " (constant/transportProperties)" << nl << endl;
@@ -161,7 +152,7 @@ void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
             (
                 UEqn
              ==
-                fvc::reconstruct
+                reconstruct_
                 (
                     phiForces/rAUf - alphaf*fvc::snGrad(p)*mesh_.magSf()
                 )
@@ -201,14 +192,7 @@ void Foam::fluidPhase::solve(pimpleControl& pimple, const dimensionedVector& g)
                 {
                     phi_ = phiHbyA - pEqn.flux()/alphaf;
                     p.relax();
-                    if (cellGradientCorrection_)
-                    {
-                        U = HbyA + rAU*(fvc::reconstruct(phiForces/rAUf) - alpha*fvc::grad(p));
-                    }
-                    else
-                    {
-                        U = HbyA + rAU*fvc::reconstruct((phiForces - pEqn.flux()/alphaf)/rAUf);
-                    }
+                    U = HbyA + rAU*reconstruct_((phiForces - pEqn.flux()/alphaf)/rAUf);
                     U.correctBoundaryConditions();
                 }
             }
