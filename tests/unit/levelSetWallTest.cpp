@@ -8,8 +8,10 @@
 //     decelerates at mu g, as on the box's mirrored friction floor;
 //   * containment: a disk thrown at a round obstacle at 0.5 and 2 wave
 //     speeds, head-on and grazing, never has a point inside the obstacle
-//     (exact distance) at the end of a step, and its energy stays bounded.
+//     (exact distance) at the end of a step, and its energy stays bounded;
+//   * an inlet wall's node condition and its leaving points.
 #include "testHelpers.hpp"
+#include "kernels/levelSetWall.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -441,4 +443,51 @@ TEST(LevelSetWall, MovingWallsCarryAndPushBlocks)
             }
         }
     }
+}
+
+// An inlet level-set wall (a mesh's inlet patch off the box's sides): its
+// nodes beyond the plane with material get the entering velocity, nodes on
+// the material's side and empty nodes keep theirs; a point found beyond it
+// leaves (2 + wall), and the plane does not move with the inlet's velocity
+// (it is the material's, not the wall's).
+TEST(LevelSetWall, InletSetsItsVelocityBeyondThePlaneAndLetsPointsLeave)
+{
+    Lattice L = box(10, 10, 1, 0.1);
+    L.finalise();
+    LevelSetWalls ls;
+    WallCondition in{WallType::inlet, 0};
+    in.velocity = {0.5, -2, 0};
+    // The plane y = 0.83, the material below it (normal -y)
+    LevelSetWall w{"top", std::make_shared<HalfSpaceShape>(std::array<Real, 3>{0, 0.83, 0}, std::array<Real, 3>{0, -1, 0}), in};
+    EXPECT_THROW(ls.build(L, {w}, {0, 0, 0.05}), std::invalid_argument);   // no booking index
+    w.specCondition = 3;
+    ls.build(L, {w}, {0, 0, 0.05});
+    EXPECT_TRUE(ls.hasOutlets());
+    const LevelSetView v = ls.view();
+    const Index beyond = L.realNode(4, 8, 0), inside = L.realNode(4, 7, 0), empty = L.realNode(5, 9, 0);
+    ASSERT_LT(v.phi[beyond], 0);   // node centre y = 0.85
+    ASSERT_GT(v.phi[inside], 0);   // 0.75
+    std::vector<Real> mass(std::size_t(L.nNodes), 0.0);
+    std::array<std::vector<Real>, 3> vel;
+    for (auto& a : vel) a.assign(std::size_t(L.nNodes), 0.3);
+    mass[std::size_t(beyond)] = mass[std::size_t(inside)] = 1;
+    Real* vp[3] = {vel[0].data(), vel[1].data(), vel[2].data()};
+    for (const Index I : {beyond, inside, empty}) levelSetWallNode(v, mass.data(), vp, 1e-12, I, 1e9);
+    EXPECT_EQ(vel[0][beyond], 0.5);
+    EXPECT_EQ(vel[1][beyond], -2);
+    for (const Index I : {inside, empty}) for (int d = 0; d < 3; ++d) EXPECT_EQ(vel[d][I], 0.3);
+
+    // Two points: one beyond the plane (leaves), one below it (stays); a
+    // large dt would move the plane by the inlet velocity if it moved
+    Particles P;
+    P.add({0.45, 0.86, 0.05}, {0, 1, 0}, 1, 1, 0);
+    P.add({0.45, 0.80, 0.05}, {0, 1, 0}, 1, 1, 0);
+    std::array<std::vector<Real>, 9> Lg;
+    std::array<std::vector<Real>, 3> dx;
+    for (auto& a : Lg) a.assign(2, 0.0);
+    for (auto& a : dx) a.assign(2, 0.0);
+    const PointView pv = pointView(P, Lg, dx);
+    EXPECT_EQ(levelSetContainPoint(L, v, pv, 0, 1.0), 2);
+    EXPECT_EQ(levelSetContainPoint(L, v, pv, 1, 1.0), 0);
+    EXPECT_EQ(P.x[1][1], 0.80);
 }

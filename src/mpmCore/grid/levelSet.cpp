@@ -186,21 +186,21 @@ void LevelSetWalls::build
         {
             throw std::invalid_argument("level-set wall " + w.name + " has no shape");
         }
-        if (t != WallType::noSlip && t != WallType::slip && t != WallType::friction && t != WallType::outlet)
+        if (t == WallType::periodic)
         {
             throw std::invalid_argument
             (
                 "level-set wall " + w.name + ": type " + wallTypeName(t)
-              + " is not a wall condition (valid: noSlip slip friction outlet)"
+              + " is not a wall condition (valid: noSlip slip friction outlet inlet)"
             );
         }
-        if (t == WallType::outlet && w.specCondition < 0)
+        if (isOpen(t) && w.specCondition < 0)
         {
-            throw std::invalid_argument("level-set outlet " + w.name + " has no boundary condition index");
+            throw std::invalid_argument("level-set " + std::string(wallTypeName(t)) + " " + w.name + " has no boundary condition index");
         }
         type_.push_back(int(t));
         mu_.push_back(t == WallType::friction ? w.condition.frictionCoefficient : 0.0);
-        hasOutlets_ = hasOutlets_ || t == WallType::outlet;
+        hasOutlets_ = hasOutlets_ || isOpen(t);
     }
     nInside_ = 0;
     if (walls_.empty())
@@ -218,8 +218,20 @@ void LevelSetWalls::build
     normalHold_ = L.h;
     unsolved_ = unsolved;
     for (auto& a : velocity_) a.assign(walls_.size(), 0.0);
+    setInletVelocities(L);
     displacement_.assign(walls_.size(), Vec{0, 0, 0});
     computeNodes(L);
+}
+
+void LevelSetWalls::setInletVelocities(const Lattice& L)
+{
+    // An inlet does not move: its velocity is the entering material's, the
+    // value its nodes get (kernels/levelSetWall.hpp)
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+    {
+        if (walls_[w].condition.type != WallType::inlet) continue;
+        for (int a = 0; a < 3; ++a) velocity_[a][w] = L.solved[a] ? walls_[w].condition.velocity[a] : 0;
+    }
 }
 
 void LevelSetWalls::move(const Lattice& L, const std::vector<Vec>& displacement, const std::vector<Vec>& velocity)
@@ -233,6 +245,7 @@ void LevelSetWalls::move(const Lattice& L, const std::vector<Vec>& displacement,
     {
         for (int a = 0; a < 3; ++a) velocity_[a][w] = L.solved[a] ? velocity[w][a] : 0;
     }
+    setInletVelocities(L);
     computeNodes(L);
 }
 

@@ -104,12 +104,16 @@ struct LevelSetWall
 {
     std::string name;
     std::shared_ptr<const WallShape> shape;
-    // noSlip, slip or friction (with its frictionCoefficient), or outlet:
-    // no node condition, and a point that crosses it leaves the domain
+    // noSlip, slip or friction (with its frictionCoefficient), outlet: no
+    // node condition, and a point that crosses it leaves the domain, or
+    // inlet (a mesh's inlet patch off the box's sides): its nodes with
+    // material get its velocity, and a point that crosses it outwards
+    // leaves as at an outlet (the points entering are added by the
+    // OpenFOAM layer, openBoundaries)
     WallCondition condition;
-    // An outlet's condition index in the BoundarySpec: the removed count
-    // and mass are booked there (MpmSystem::removedCount), as for an
-    // outlet on a side of the box
+    // An open wall's condition index in the BoundarySpec: the removed
+    // count and mass are booked there (MpmSystem::removedCount), as for an
+    // open patch on a side of the box
     int specCondition = -1;
 };
 
@@ -124,7 +128,7 @@ struct LevelSetView
     Real band = 0;                      // beyond it phi is only a bound
     Real contact = 0;                   // nodes with phi below it are held
     Real normalHold = 0;                // noSlip: nodes with phi below it do not move away from the wall
-    const Real* velocity[3] = {};       // per wall: its velocity (moving)
+    const Real* velocity[3] = {};       // per wall: its velocity (moving; an inlet's: the entering material's)
     MPM_HOST_DEVICE explicit operator bool() const { return phi != nullptr; }
 };
 
@@ -134,8 +138,8 @@ public:
     // The node planes of every node of L (ghost layers included).
     // unsolved: the coordinate given to the shapes along unsolved axes (a
     // 2D case's mid-plane). Throws std::invalid_argument for a wall whose
-    // condition is not noSlip, slip, friction or outlet (with its
-    // specCondition), or without a shape.
+    // condition is periodic, for an outlet or inlet without its
+    // specCondition, or without a shape.
     // contact: nodes with phi below it get the wall condition (0: the
     // nodes inside the walls; see MpmSystem::setLevelSetWalls).
     // domain: the whole (undecomposed) lattice, whose box's ghost layers
@@ -147,7 +151,7 @@ public:
     );
 
     bool empty() const { return walls_.empty(); }
-    // Whether any wall is an outlet (points may leave through it)
+    // Whether any wall is open (points may leave through it)
     bool hasOutlets() const { return hasOutlets_; }
     const std::vector<LevelSetWall>& walls() const { return walls_; }
     // Empty view (false) without walls
@@ -191,6 +195,8 @@ private:
     std::vector<std::array<Real, 3>> displacement_;
     std::array<std::vector<Real>, 3> velocity_;
     void computeNodes(const Lattice& L);
+    // velocity_ of the inlets: their entering material's
+    void setInletVelocities(const Lattice& L);
 };
 
 } // namespace mpm

@@ -44,6 +44,13 @@ MPM_HOST_DEVICE inline void levelSetWallNode
     if (!(phi < ls.contact || phi < ls.normalHold) || mass[I] <= massTolerance) return;
     const int w = ls.wall[I];
     if (ls.type[w] == int(WallType::outlet)) return;   // open: no condition
+    if (ls.type[w] == int(WallType::inlet))
+    {
+        // Beyond an inlet (a Dirichlet band, as beyond an inlet face of
+        // the box): the material there moves in at the inlet's velocity
+        if (phi < ls.contact) for (int d = 0; d < 3; ++d) v[d][I] = ls.velocity[d][w];
+        return;
+    }
     const bool noSlip = ls.type[w] == int(WallType::noSlip);
     if (!(phi < ls.contact) && !noSlip) return;
     // Relative to the wall (a moving wall: its velocity; else zero)
@@ -69,6 +76,13 @@ MPM_HOST_DEVICE inline void levelSetWallNode
     for (int d = 0; d < 3; ++d) v[d][I] = u[d] + vw[d];
 }
 
+// The velocity of wall w's surface: a moving wall's; an open wall's (an
+// inlet's velocity is its material's, not its own) zero
+MPM_HOST_DEVICE inline Real levelSetSurfaceVelocity(const LevelSetView& ls, int w, int a)
+{
+    return isOpen(WallType(ls.type[w])) ? Real(0) : ls.velocity[a][w];
+}
+
 // Signed distance of x from the closest-point plane of node I, the plane
 // moved on by its wall's velocity times dt (the wall at the step's end)
 MPM_HOST_DEVICE inline Real levelSetPlaneDistance
@@ -82,7 +96,7 @@ MPM_HOST_DEVICE inline Real levelSetPlaneDistance
     {
         if (!L.solved[a]) continue;
         const Real xa = L.origin[a] + (c[a] + 0.5)*L.h;
-        d += ls.normal[a][I]*(x[a] - xa - dt*ls.velocity[a][w]);
+        d += ls.normal[a][I]*(x[a] - xa - dt*levelSetSurfaceVelocity(ls, w, a));
     }
     return d;
 }
@@ -95,8 +109,8 @@ MPM_HOST_DEVICE inline Real levelSetPlaneDistance
 // behind each of its tangent planes, so a point outside them all is outside
 // the wall. Points more than a band from every wall cost one load. dt: the
 // step's, over which a moving wall's planes move on. Returns 0 (left
-// alone), 1 (put back), or 2 + w: the point lies beyond outlet w and
-// leaves (nothing is changed).
+// alone), 1 (put back), or 2 + w: the point lies beyond outlet (or inlet)
+// w and leaves (nothing is changed).
 MPM_HOST_DEVICE inline int levelSetContainPoint
 (
     const Lattice& L, const LevelSetView& ls, const PointView& P, Index p, Real dt
@@ -146,14 +160,14 @@ MPM_HOST_DEVICE inline int levelSetContainPoint
             }
         }
         if (worst >= 0) break;
-        // Beyond an outlet the point leaves, where it is (on the first
-        // pass: a point put back from a wall stays)
-        if (ls.type[through] == int(WallType::outlet) && !moved) return 2 + through;
+        // Beyond an outlet or an inlet the point leaves, where it is (on
+        // the first pass: a point put back from a wall stays)
+        if (isOpen(WallType(ls.type[through])) && !moved) return 2 + through;
         const Real push = -worst + 1e-9*L.h;
         for (int a = 0; a < 3; ++a) x[a] += push*n[a];
         // The velocity relative to the wall loses its approaching part
         Real un = 0;
-        for (int a = 0; a < 3; ++a) un += (P.v[a][p] - ls.velocity[a][through])*n[a];
+        for (int a = 0; a < 3; ++a) un += (P.v[a][p] - levelSetSurfaceVelocity(ls, through, a))*n[a];
         if (un < 0) for (int a = 0; a < 3; ++a) P.v[a][p] -= un*n[a];
         moved = true;
     }

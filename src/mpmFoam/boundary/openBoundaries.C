@@ -3,7 +3,203 @@
 #include "pointSeeder.H"
 #include "knownKeywords.H"
 #include "Time.H"
+#include "surfaceWallShape.H"
+#include "triSurface.H"
 #include <limits>
+
+namespace
+{
+
+using namespace Foam;
+
+// The outward unit normal of a planar patch (its triangles, every
+// processor's); an inlet that is not one plane stops with a message
+vector planeNormal(const triSurface& s, const word& patch, const dictionary& d)
+{
+    vector sum(Zero);
+    scalar area = 0;
+    forAll(s, t)
+    {
+        sum += s[t].areaNormal(s.points());
+        area += s[t].mag(s.points());
+    }
+    const vector n(sum/max(mag(sum), VSMALL));
+    forAll(s, t)
+    {
+        const vector at(s[t].areaNormal(s.points()));
+        if (mag(at) > 1e-9*area && (at/mag(at) & n) < 1 - 1e-6)
+        {
+            FatalIOErrorInFunction(d)
+                << "The inlet " << patch << " is not one plane: its face at "
+                << s[t].centre(s.points()) << " has the normal " << at/mag(at)
+                << ", the patch " << n << " (an inlet off the lattice box's "
+                << "sides must be planar)" << exit(FatalIOError);
+        }
+    }
+    return n;
+}
+
+// Whether q lies in triangle (a, b, c), all given in the plane's 2D
+// coordinates (u, v), edges included
+bool inTriangle(const vector2D& q, const vector2D& a, const vector2D& b, const vector2D& c)
+{
+    auto cross = [](const vector2D& o, const vector2D& x, const vector2D& y)
+    {
+        return (x.x() - o.x())*(y.y() - o.y()) - (x.y() - o.y())*(y.x() - o.x());
+    };
+    const scalar d1 = cross(a, b, q), d2 = cross(b, c, q), d3 = cross(c, a, q);
+    const scalar tol = 1e-12*(mag(b - a) + mag(c - a))*(mag(b - a) + mag(c - a));
+    const bool neg = d1 < -tol || d2 < -tol || d3 < -tol;
+    const bool pos = d1 > tol || d2 > tol || d3 > tol;
+    return !(neg && pos);
+}
+
+} // namespace
+
+
+Foam::List<Foam::point> Foam::openBoundaries::planeLayer
+(
+    const triSurface& surface,
+    vector& inward,
+    const Vector<label>& ppc,
+    scalar& normalSpacing,
+    const word& patch,
+    const dictionary& d
+) const
+{
+    // A point per sub-cell position, as seeding puts them, on a grid of the
+    // patch's plane: along the lattice's axes where the plane is normal to
+    // one (the positions the seeded material has), else along two in-plane
+    // directions at h/n. The same list on every processor.
+    const mpm::Lattice& L = lattice_.lattice();
+    const pointField& pts = surface.points();
+    const point mid(lattice_.cellCentre(0));   // unsolved axes: the mid-plane
+    label a = 0;
+    for (direction i = 1; i < 3; ++i) if (mag(inward[i]) > mag(inward[a])) a = i;
+    const bool aligned = mag(inward[a]) > 1 - 1e-9;
+    vector e[2];
+    scalar step[2];
+    label count[2];
+    scalar start[2];
+    point origin(Zero);
+    if (aligned)
+    {
+        const scalar sgn = inward[a] > 0 ? 1 : -1;
+        inward = Zero;
+        inward[a] = sgn;
+        normalSpacing = L.h/ppc[a];
+        const label ax[2] = {min((a + 1) % 3, (a + 2) % 3), max((a + 1) % 3, (a + 2) % 3)};
+        scalar plane = 0;
+        for (const point& x : pts) plane += x[a]/pts.size();
+        origin[a] = plane;
+        for (int k = 0; k < 2; ++k)
+        {
+            e[k] = Zero;
+            e[k][ax[k]] = 1;
+            origin[ax[k]] = L.origin[ax[k]];
+            if (L.solved[ax[k]])
+            {
+                step[k] = L.h/ppc[ax[k]];
+                count[k] = L.nCells[ax[k]]*ppc[ax[k]];
+                start[k] = 0.5*step[k];
+            }
+            else
+            {
+                step[k] = 0;
+                count[k] = 1;
+                start[k] = mid[ax[k]] - L.origin[ax[k]];
+            }
+        }
+    }
+    else
+    {
+        label n = -1;
+        for (direction i = 0; i < 3; ++i)
+        {
+            if (!L.solved[i]) continue;
+            if (n >= 0 && ppc[i] != n)
+            {
+                FatalIOErrorInFunction(d)
+                    << "The inlet " << patch << " is not normal to an axis "
+                    << "of the lattice: its pointsPerCell must be the same "
+                    << "in every solved direction (it is " << ppc << ")"
+                    << exit(FatalIOError);
+            }
+            n = ppc[i];
+        }
+        normalSpacing = L.h/n;
+        label u = -1;
+        for (direction i = 0; i < 3; ++i) if (!L.solved[i]) u = i;
+        if (u >= 0)
+        {
+            // 2D: the plane holds the unsolved axis; one row at mid-plane
+            e[1] = Zero;
+            e[1][u] = 1;
+            e[0] = e[1] ^ inward;
+            e[0] /= mag(e[0]);
+        }
+        else
+        {
+            label k = 0;
+            for (direction i = 1; i < 3; ++i) if (mag(inward[i]) < mag(inward[k])) k = i;
+            vector axis(Zero);
+            axis[k] = 1;
+            e[0] = axis - (axis & inward)*inward;
+            e[0] /= mag(e[0]);
+            e[1] = inward ^ e[0];
+        }
+        origin = pts[0];
+        for (int k = 0; k < 2; ++k)
+        {
+            if (u >= 0 && k == 1)
+            {
+                step[k] = 0;
+                count[k] = 1;
+                start[k] = (mid - origin) & e[k];
+                continue;
+            }
+            scalar lo = GREAT, hi = -GREAT;
+            for (const point& x : pts)
+            {
+                lo = min(lo, (x - origin) & e[k]);
+                hi = max(hi, (x - origin) & e[k]);
+            }
+            step[k] = normalSpacing;
+            count[k] = label(std::ceil((hi - lo)/step[k]));
+            start[k] = lo + 0.5*step[k];
+        }
+    }
+    // The triangles in the plane's coordinates
+    auto uv = [&](const point& x)
+    {
+        return vector2D((x - origin) & e[0], (x - origin) & e[1]);
+    };
+    List<FixedList<vector2D, 3>> tri(surface.size());
+    forAll(surface, t)
+    {
+        for (label i = 0; i < 3; ++i) tri[t][i] = uv(pts[surface[t][i]]);
+    }
+    DynamicList<point> layer;
+    for (label j = 0; j < count[1]; ++j)
+    for (label i = 0; i < count[0]; ++i)
+    {
+        const vector2D q(start[0] + i*step[0], start[1] + j*step[1]);
+        bool inside = false;
+        forAll(tri, t)
+        {
+            if (inTriangle(q, tri[t][0], tri[t][1], tri[t][2])) { inside = true; break; }
+        }
+        if (inside) layer.append(origin + q.x()*e[0] + q.y()*e[1]);
+    }
+    if (layer.empty())
+    {
+        FatalIOErrorInFunction(d)
+            << "The inlet " << patch << " holds no point of a layer at the "
+            << "lattice spacing " << L.h << " and pointsPerCell " << ppc
+            << ": it is smaller than the spacing between points" << exit(FatalIOError);
+    }
+    return List<point>(layer);
+}
 
 void Foam::openBoundaries::readInlet
 (
@@ -18,8 +214,9 @@ void Foam::openBoundaries::readInlet
     inletInjection in;
     in.open = open;
 
-    // The patch must be one side of the box: its normal is the entry
-    // direction (a plane the layers are parallel to).
+    // The patch is one side of the box (its normal is the entry direction,
+    // a plane the layers are parallel to), or a plane off the box's sides
+    // (a mesh that is not a uniform box: a level-set inlet)
     int side = -1;
     for (int s = 0; s < 6; ++s)
     {
@@ -35,16 +232,33 @@ void Foam::openBoundaries::readInlet
         }
         side = s;
     }
-    if (side < 0)
+    const label patchi = mesh_.boundaryMesh().findPatchID(patch_[open]);
+    const bool offBox = patchi >= 0 && !lattice_.cellsAreNodes()
+        && returnReduce(mesh_.boundaryMesh()[patchi].size(), sumOp<label>()) > 0 && side < 0;
+    if (side < 0 && !offBox)
     {
         FatalIOErrorInFunction(d)
             << "The inlet " << patch_[open] << " has no face on the box"
             << exit(FatalIOError);
     }
-    const int a = side/2;
+    const int a = side >= 0 ? side/2 : 0;
     const bool low = side % 2 == 0;
     in.inward = Zero;
-    in.inward[a] = low ? 1 : -1;
+    if (side >= 0) in.inward[a] = low ? 1 : -1;
+    triSurface surface;
+    if (offBox)
+    {
+        if (side >= 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "The inlet " << patch_[open] << " lies partly on a side "
+                << "of the lattice's box and partly off it: an inlet must "
+                << "be one plane" << exit(FatalIOError);
+        }
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        surface = triangulate(mesh_, identity(pp.size(), pp.start()));
+        in.inward = -planeNormal(surface, patch_[open], d);
+    }
     const auto& U = spec.conditions[c].velocity;
     in.velocity = vector(U[0], U[1], U[2]);
     in.normalSpeed = in.velocity & in.inward;
@@ -79,30 +293,38 @@ void Foam::openBoundaries::readInlet
     in.massRate = mass;
     in.rate = Function1<scalar>::New(mass ? "massFlowRate" : "volumeFlowRate", d);
 
-    // One layer: a point per sub-cell position of every face of the patch,
-    // on the patch plane, in the order of the faces (lattice order), the
-    // same on every processor.
-    const int a1 = (a + 1) % 3, a2 = (a + 2) % 3;
-    const int lo = min(a1, a2), hi = max(a1, a2);
-    const scalar plane = L.origin[a] + (low ? 0 : L.length(a));
     DynamicList<point> layer;
-    const auto& faces = spec.faceCondition[side];
-    for (size_t f = 0; f < faces.size(); ++f)
+    scalar offBoxSpacing = 0;
+    if (offBox)
     {
-        if (faces[f] != c) continue;
-        int r[3];
-        r[lo] = int(f % size_t(L.nCells[lo]));
-        r[hi] = int(f/size_t(L.nCells[lo]));
-        r[a] = low ? 0 : L.nCells[a] - 1;
-        const point cc(lattice_.cellCentre(label(L.cellIndex(r[0], r[1], r[2]))));
-        for (label qh = 0; qh < ppc[hi]; ++qh)
-        for (label ql = 0; ql < ppc[lo]; ++ql)
+        layer = planeLayer(surface, in.inward, ppc, offBoxSpacing, patch_[open], d);
+    }
+    else
+    {
+        // One layer: a point per sub-cell position of every face of the patch,
+        // on the patch plane, in the order of the faces (lattice order), the
+        // same on every processor.
+        const int a1 = (a + 1) % 3, a2 = (a + 2) % 3;
+        const int lo = min(a1, a2), hi = max(a1, a2);
+        const scalar plane = L.origin[a] + (low ? 0 : L.length(a));
+        const auto& faces = spec.faceCondition[side];
+        for (size_t f = 0; f < faces.size(); ++f)
         {
-            point x(cc);
-            x[a] = plane;
-            if (L.solved[lo]) x[lo] += ((ql + 0.5)/ppc[lo] - 0.5)*L.h;
-            if (L.solved[hi]) x[hi] += ((qh + 0.5)/ppc[hi] - 0.5)*L.h;
-            layer.append(x);
+            if (faces[f] != c) continue;
+            int r[3];
+            r[lo] = int(f % size_t(L.nCells[lo]));
+            r[hi] = int(f/size_t(L.nCells[lo]));
+            r[a] = low ? 0 : L.nCells[a] - 1;
+            const point cc(lattice_.cellCentre(label(L.cellIndex(r[0], r[1], r[2]))));
+            for (label qh = 0; qh < ppc[hi]; ++qh)
+            for (label ql = 0; ql < ppc[lo]; ++ql)
+            {
+                point x(cc);
+                x[a] = plane;
+                if (L.solved[lo]) x[lo] += ((ql + 0.5)/ppc[lo] - 0.5)*L.h;
+                if (L.solved[hi]) x[hi] += ((qh + 0.5)/ppc[hi] - 0.5)*L.h;
+                layer.append(x);
+            }
         }
     }
     in.layer = layer;
@@ -115,7 +337,7 @@ void Foam::openBoundaries::readInlet
     );
     in.pointMass = in.rho*in.pointVolume;
     in.layerVolume = in.layer.size()*in.pointVolume;
-    const scalar spacing = L.h/ppc[a];
+    const scalar spacing = offBox ? offBoxSpacing : L.h/ppc[a];
     const scalar area = in.layerVolume/spacing;
     Info<< "    " << patch_[open] << " inlet: material "
         << materials.names()[in.material] << ", " << ppc << " points per "
