@@ -20,6 +20,7 @@
 #     and across the stream within the patch (0 to 0.2 m);
 #   - the balance, initial + injected - removed = present, on every step,
 #     and what leaves through the outlet once the stream reaches it.
+#   3. bad input: an inlet off the box that is not one plane.
 # A wrong normal, layer spacing, point volume or Dirichlet velocity breaks
 # the positions or the mass; a missing inlet condition on the nodes lets
 # the stream slow down at the inlet (its points then lag behind U (t - t_k)).
@@ -112,5 +113,15 @@ runApps "$r" mpmSetParticles mpmFoam || { echo "FAIL: rotated run"; tail -20 "$r
 # The top's plane through the rotated (0 0.4 0); inward the rotated -y;
 # across the rotated x
 checkStream "$r" "rotated 30 deg" "(-0.2 0.3464101615137755 0)" "($s -$co 0)" "($co $s 0)"
+
+# 3. Bad input: an inlet off the box that is not one plane (the top and the
+#    right side as one patch)
+b="$SCRATCH/notPlanar"
+cp -r "$CASES/inletStream" "$b"
+sed -i 's/^timeStep .*/&\nlattice         { spacing 0.019; }/' "$(props "$b")"
+sed -i 's/    right  { type wall; faces ( (1 2 6 5) ); }//; s/    top    { type patch; faces ( (3 7 6 2) ); }/    top    { type patch; faces ( (3 7 6 2) (1 2 6 5) ); }/' "$b/system/blockMeshDict"
+sed -i 's/"(left|right)"  { type slip; }/left { type slip; }/' "$(props "$b")"
+runApps "$b" blockMesh mpmSetParticles || { echo "FAIL: notPlanar set-up"; failures=$((failures + 1)); }
+expectFailure "an inlet off the box that is not one plane" "The inlet top is not one plane: its face at .* has the normal" runIn "$b" mpmFoam
 
 finish
