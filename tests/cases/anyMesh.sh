@@ -40,28 +40,6 @@
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
-# samePositions <a> <b>: the largest position difference between two runs
-# at every written time of a, points matched by id, and the times compared
-samePositions()
-{
-    "$PY" - "$1" "$2" <<'PYEOF'
-import sys, numpy as np, mpmPost
-a, b = sys.argv[1], sys.argv[2]
-worst, n = 0.0, 0
-for t in mpmPost.times(a):
-    def byId(c):
-        ids = mpmPost.read_cloud_field(c, t, "pointId").reshape(-1)
-        return ids[np.argsort(ids)], mpmPost.read_positions(c, t)[np.argsort(ids)]
-    ia, xa = byId(a)
-    ib, xb = byId(b)
-    if not np.array_equal(ia, ib):
-        print(1e9, n); sys.exit()
-    worst = max(worst, np.abs(xa - xb).max())
-    n += 1
-print(worst, n)
-PYEOF
-}
-
 # --- graded against uniform --------------------------------------------------
 u=$(copyTutorial mpm/elasticDisks uniform)
 sed -i 's/^endTime .*/endTime 1.5;/; s/^writePrecision .*/writePrecision 17;/' "$u/system/controlDict"

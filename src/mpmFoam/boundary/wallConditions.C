@@ -418,7 +418,27 @@ mpm::BoundarySpec Foam::readWallConditions
             std::copy(fc.begin(), fc.end(), spec.faceCondition[side].begin());
         }
     }
-    if (!ml.cellsAreNodes()) conditionsBeyondMesh(ml, patchWalls, spec, names);
+    if (!ml.cellsAreNodes())
+    {
+        // A lattice extent's sides inside the mesh: its wall condition
+        label extentCondition = -1;
+        for (int side = 0; side < 6; ++side)
+        {
+            if (!ml.extentSide(side)) continue;
+            for (int& c : spec.faceCondition[side])
+            {
+                if (c >= 0) continue;
+                if (extentCondition < 0)
+                {
+                    extentCondition = label(spec.conditions.size());
+                    spec.conditions.push_back(ml.extentWall());
+                    names.append("latticeExtent");
+                }
+                c = int(extentCondition);
+            }
+        }
+        conditionsBeyondMesh(ml, patchWalls, spec, names);
+    }
     for (int side = 0; side < 6; ++side)
     {
         if (!L.solved[side/2]) { spec.faceCondition[side].clear(); continue; }

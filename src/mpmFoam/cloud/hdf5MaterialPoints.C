@@ -240,7 +240,8 @@ void Foam::hdf5MaterialPoints::writeFile(const mpm::Particles& P, const word& na
         forAll(lattice_.cellIndices(), celli)
         {
             const auto& r = lattice_.cellIndices()[celli];
-            cellIds[celli] = label(L.cellIndex(r[0], r[1], r[2]));
+            // A cell beyond the lattice's extent has no lattice cell
+            cellIds[celli] = lattice_.cellInLattice(celli) ? label(L.cellIndex(r[0], r[1], r[2])) : -1;
         }
         List<labelList> allIds(Pstream::nProcs());
         allIds[Pstream::myProcNo()] = cellIds;
@@ -261,6 +262,7 @@ void Foam::hdf5MaterialPoints::writeFile(const mpm::Particles& P, const word& na
                 {
                     forAll(allIds[proc], i)
                     {
+                        if (allIds[proc][i] < 0) continue;
                         const scalar* x = reinterpret_cast<const scalar*>(&allValues[proc][i]);
                         std::copy(x, x + cols, v.begin() + std::size_t(allIds[proc][i])*cols);
                     }

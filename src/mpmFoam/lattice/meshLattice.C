@@ -1,6 +1,7 @@
 #include "meshLattice.H"
 #include "cellModel.H"
 #include "boundBox.H"
+#include "Pair.H"
 #include "choice.H"
 #include "knownKeywords.H"
 #include "OStringStream.H"
@@ -108,7 +109,7 @@ void Foam::meshLattice::build(const dictionary& mpmDict)
             << " or hierarchical)" << exit(FatalError);
     }
     const dictionary& ld = optionalSubDict(mpmDict, "lattice");
-    checkKeywords(ld, {"spacing"}, "lattice");
+    checkKeywords(ld, {"spacing", "extent", "extentWall"}, "lattice");
     vector h0(Zero);
     std::string notBox;
     const bool box = uniformBox(h0, notBox);
@@ -123,23 +124,90 @@ void Foam::meshLattice::build(const dictionary& mpmDict)
     const scalar h =
         given ? readBounded(ld, "spacing", 0, numberRange{0, GREAT, false}, false)
       : meanCellSize();
-    if (box && (!given || mag(h - hBox) <= 1e-6*hBox))
+    const bool extent = ld.found("extent");
+    if (!extent && ld.found("extentWall"))
+    {
+        FatalIOErrorInFunction(ld)
+            << "extentWall without extent: the wall is the lattice extent's "
+            << "side inside the mesh (lattice { extent ((x0 y0 z0) (x1 y1 z1)); "
+            << "extentWall { type slip; } })" << exit(FatalIOError);
+    }
+    if (box && !extent && (!given || mag(h - hBox) <= 1e-6*hBox))
     {
         buildFromCells(h0);
         return;
     }
     const std::string why
     (
-        box
+        extent ? std::string("lattice extent given")
+      : box
       ? "lattice spacing " + Foam::name(h) + " differs from the cells' " + Foam::name(hBox)
       : "the mesh is not a uniform box: " + notBox
     );
     cellsAreNodes_ = false;
+    if (extent) readExtent(ld);
     buildOwn(h);
     Info<< "MPM lattice: its own, spacing " << h
         << (given ? " (lattice spacing)" : " (default: the mesh's mean cell size;"
             " set lattice { spacing ...; } in mpmProperties)") << nl
         << "    (" << why.c_str() << ")" << nl;
+    if (extent)
+    {
+        Info<< "    extent " << extent_ << " (the mesh's bounding box cut to it);"
+            << " its sides inside the mesh: " << mpm::wallTypeName(extentWall_.type);
+        if (extentWall_.type == mpm::WallType::friction) Info<< ' ' << extentWall_.frictionCoefficient;
+        Info<< nl;
+    }
+}
+
+void Foam::meshLattice::readExtent(const dictionary& ld)
+{
+    const Pair<vector> e(ld.get<Pair<vector>>("extent"));
+    extent_ = boundBox(e.first(), e.second());
+    const boundBox bb(mesh_.points(), true);
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (mesh_.solutionD()[d] <= 0) continue;
+        const scalar lo = max(e.first()[d], bb.min()[d]), hi = min(e.second()[d], bb.max()[d]);
+        if (!(e.second()[d] > e.first()[d]) || !(hi > lo))
+        {
+            FatalIOErrorInFunction(ld)
+                << "lattice extent " << e << " does not overlap the mesh's "
+                << "bounding box " << bb << " with a positive length in "
+                << "direction " << label(d) << " (give ((min) (max)) with "
+                << "min < max, inside the mesh)" << exit(FatalIOError);
+        }
+    }
+    // The extent's sides inside the mesh are walls: their condition
+    extentWall_ = mpm::WallCondition{};
+    if (ld.found("extentWall"))
+    {
+        const dictionary& w = ld.subDict("extentWall");
+        checkKeywords(w, {"type", "frictionCoefficient"}, "extentWall");
+        extentWall_.type = readChoice
+        (
+            w, "type", mpm::parseWallType,
+            [](mpm::WallType t) { return mpm::wallTypeName(t); },
+            "noSlip slip friction outlet", mpm::WallType::noSlip, false
+        );
+        if (extentWall_.type == mpm::WallType::periodic || extentWall_.type == mpm::WallType::inlet)
+        {
+            FatalIOErrorInFunction(w)
+                << "extentWall type " << mpm::wallTypeName(extentWall_.type)
+                << " is not a wall of the lattice's extent (valid: noSlip slip"
+                << " friction outlet)" << exit(FatalIOError);
+        }
+        if (extentWall_.type == mpm::WallType::friction)
+        {
+            extentWall_.frictionCoefficient = readBounded(w, "frictionCoefficient", 0, 0, GREAT);
+        }
+        else if (w.found("frictionCoefficient"))
+        {
+            FatalIOErrorInFunction(w)
+                << "frictionCoefficient is for an extentWall of type friction"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 Foam::scalar Foam::meshLattice::meanCellSize() const
@@ -160,10 +228,31 @@ Foam::scalar Foam::meshLattice::meanCellSize() const
 
 void Foam::meshLattice::buildOwn(scalar h)
 {
-    const boundBox bb(mesh_.points(), true);
+    const boundBox meshBox(mesh_.points(), true);
+    boundBox bb(meshBox);
+    if (extent_.valid())
+    {
+        // The lattice covers the extent's part of the mesh; a side the
+        // extent cuts is a wall (extentWall)
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (mesh_.solutionD()[d] <= 0) continue;
+            const scalar tol = 1e-9*meshBox.mag();
+            if (extent_.min()[d] > meshBox.min()[d] + tol)
+            {
+                bb.min()[d] = extent_.min()[d];
+                extentSide_[2*d] = true;
+            }
+            if (extent_.max()[d] < meshBox.max()[d] - tol)
+            {
+                bb.max()[d] = extent_.max()[d];
+                extentSide_[2*d + 1] = true;
+            }
+        }
+    }
     const Vector<label>& solD = mesh_.solutionD();
     lattice_.h = h;
-    unsolvedSpan_ = bb.span();
+    unsolvedSpan_ = meshBox.span();
     cellVolume_ = 1;
     for (direction d = 0; d < 3; ++d)
     {
@@ -174,7 +263,12 @@ void Foam::meshLattice::buildOwn(scalar h)
         // lattice's, its max faces too where the length is a multiple
         lattice_.nCells[d] = lattice_.solved[d]
           ? max(label(1), label(std::ceil(len/h - 1e-6))) : 1;
-        cellVolume_ *= lattice_.solved[d] ? h : len;
+        if (extentSide_[2*d + 1])
+        {
+            // A cut max side is the extent's own (whole cells below it)
+            lattice_.nCells[d] = max(label(1), label(std::floor(len/h + 1e-6)));
+        }
+        cellVolume_ *= lattice_.solved[d] ? h : meshBox.span()[d];
     }
     lattice_.pad = 2;
     try
@@ -198,10 +292,12 @@ void Foam::meshLattice::mapCellCentres()
     // may share the lattice cell holding their centres
     cellNode_.setSize(mesh_.nCells());
     cellIjk_.resize(mesh_.nCells());
+    cellOutside_.setSize(mesh_.nCells(), false);
     forAll(mesh_.cellCentres(), celli)
     {
         label ijk[3];
         indicesOf(mesh_.cellCentres()[celli], ijk);
+        cellOutside_[celli] = !insideLattice(mesh_.cellCentres()[celli]);
         cellIjk_[celli] = {int(ijk[0]), int(ijk[1]), int(ijk[2])};
         cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
         if (!cellsAreNodes_) continue;
@@ -403,6 +499,8 @@ void Foam::meshLattice::buildExchangeWeights() const
         const point& cc = mesh_.cellCentres()[celli];
         auto add = [&](const point& x, scalar v)
         {
+            // Beyond a lattice extent the cell overlaps no lattice cell
+            if (!insideLattice(x)) return;
             label ijk[3];
             indicesOf(x, ijk);
             label I = label(lattice_.realNode(ijk[0], ijk[1], ijk[2]));
@@ -494,6 +592,17 @@ bool Foam::meshLattice::ownsLatticeCell(label globalCell) const
 {
     if (cellsAreNodes_) return latticeCell_.found(globalCell);
     return latticeOwner_.empty() || latticeOwner_[globalCell] == Pstream::myProcNo();
+}
+
+bool Foam::meshLattice::insideLattice(const point& x) const
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!lattice_.solved[d]) continue;
+        const scalar s = (x[d] - lattice_.origin[d])/lattice_.h;
+        if (s < 0 || s > lattice_.nCells[d]) return false;
+    }
+    return true;
 }
 
 Foam::label Foam::meshLattice::cellOf(label i, label j, label k) const

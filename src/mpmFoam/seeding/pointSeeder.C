@@ -284,7 +284,8 @@ Foam::label Foam::seedRegions
                     << "the mesh (direction " << label(a) << ", mesh from "
                     << L.origin[a] << " to " << L.origin[a] + L.length(a)
                     << "): points would be seeded outside the mesh." << nl
-                    << "Shrink the region or enlarge the mesh."
+                    << "Shrink the region or enlarge the mesh (or the MPM"
+                    << " lattice's extent, lattice { extent ...; })"
                     << exit(FatalIOError);
             }
         }

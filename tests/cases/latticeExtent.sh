@@ -1,0 +1,93 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# The MPM lattice's extent (lattice { extent ((min) (max)); extentWall {...} },
+# docs/geometry.md): the lattice covers the part of the mesh inside it, and
+# its sides inside the mesh are walls.
+#   1. The elasticDisks box (uniform, so its cells would be the lattice) with
+#      an extent that cuts 2 cells off its x+ and y+ sides (h = 0.05, the
+#      disks never come within 2 cells of the cut): the lattice is its own,
+#      smaller, and the positions equal the full box's at every written time
+#      (1e-12 m; the same lattice cells, the same points).
+#   2. One disk thrown at 0.5 m/s against the extent's x+ side at 0.6
+#      (extentWall slip), against the same disk in a box mesh that ends at
+#      0.6 with a slip wall there: positions equal at every written time
+#      (1e-12 m): the extent's side is the same mirrored wall. And no point
+#      beyond 0.6; the cells beyond the extent have alpha.solid 0.
+#   3. Bad input: an extent outside the mesh, extentWall without extent,
+#      an inlet extentWall, a seeding region beyond the extent.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+
+# 1. An extent the material never reaches
+u=$(copyTutorial mpm/elasticDisks full)
+sed -i 's/^endTime .*/endTime 1.5;/; s/^writePrecision .*/writePrecision 17;/' "$u/system/controlDict"
+e=$(copyTutorial mpm/elasticDisks extent)
+cp "$u/system/controlDict" "$e/system/"
+printf 'lattice { extent ((-1 -1 -1) (1.1 1.1 2)); }\n' >> "$(props "$e")"
+runApps "$u" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: full run"; exit 1; }
+runApps "$e" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: extent run"; tail -30 "$e/log.mpmFoam"; exit 1; }
+grep "MPM lattice\|extent" "$e/log.mpmFoam" | head -4
+grep -qE "^MPM lattice: 2D, h = 0.0(5|49999[0-9]*), cells \(26 26 1\)" "$e/log.mpmFoam"
+check "extent: the lattice is its own, 26 x 26 cells (the box's 28 less 2 each way)" "r == 0" r=$?
+read -r d n <<< "$(samePositions "$u" "$e")"
+check "extent the material never reaches: positions equal the full box's at $n written times (max difference $d)" \
+    "d <= 1e-12 and n >= 4" d="$d" n="$n"
+
+# 2. A disk thrown at the extent's side, against a mesh that ends there
+oneDisk()
+{
+    sed -i 's/^endTime .*/endTime 1.2;/; s/^writeInterval .*/writeInterval 0.3;/; s/^writePrecision .*/writePrecision 17;/' "$1/system/controlDict"
+    "$PY" - "$1/system/mpmSetParticlesDict" <<'PYEOF'
+import re, sys
+p = sys.argv[1]
+s = open(p).read()
+s = re.sub(r"upperDisk\s*\{.*?\}\s*\}", "", s, flags=re.S)           # the lower disk alone
+s = s.replace("value (0.1 0.1 0);", "value (0.5 0 0);")
+open(p, "w").write(s)
+PYEOF
+}
+w=$(copyTutorial mpm/elasticDisks wall)
+oneDisk "$w"
+sed -i 's/(1.2 -0.2 0) (1.2 1.2 0)/(0.6 -0.2 0) (0.6 1.2 0)/; s/(1.2 -0.2 1) (1.2 1.2 1)/(0.6 -0.2 1) (0.6 1.2 1)/; s/^nCells .*/nCells 28;/; s/(\$nCells \$nCells 1)/(16 $nCells 1)/' "$w/system/blockMeshDict"
+x=$(copyTutorial mpm/elasticDisks extentWall)
+oneDisk "$x"
+printf 'lattice { extent ((-1 -1 -1) (0.6 2 2)); extentWall { type slip; } }\n' >> "$(props "$x")"
+runApps "$w" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: wall run"; tail -20 "$w/log.mpmFoam"; failures=$((failures + 1)); }
+runApps "$x" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: extentWall run"; tail -20 "$x/log.mpmFoam"; failures=$((failures + 1)); }
+grep "extent" "$x/log.mpmFoam" | head -2
+read -r d n <<< "$(samePositions "$w" "$x")"
+check "a disk against the extent's slip side: positions equal the mesh that ends there at $n written times (max difference $d)" \
+    "d <= 1e-12 and n >= 4" d="$d" n="$n"
+res=$("$PY" - "$x" <<'PYEOF'
+import sys, numpy as np, mpmPost
+c = sys.argv[1]
+xmax, reached, beyond = -1e9, 0.0, 0.0
+for t in mpmPost.times(c)[1:]:
+    x = mpmPost.read_positions(c, t)
+    xmax = max(xmax, x[:, 0].max())
+    a = mpmPost.read_internal_field(c, t, "alpha.solid")
+    n = int(round(len(a)**0.5))            # 28 x 28 cells, x fastest
+    a = a.reshape(n, n)
+    reached = max(reached, a[:, 14:16].max())     # the two cell columns inside the side
+    beyond = max(beyond, np.abs(a[:, 16:]).max()) # the 12 beyond it
+print(xmax, reached, beyond)
+PYEOF
+)
+read -r xmax reached beyond <<< "$res"
+check "no point beyond the extent's side (largest x $xmax)" "x <= 0.6 + 1e-12" x="${xmax:-1}"
+check "the disk reached the side (alpha.solid $reached in the cells inside it) and the cells beyond have none ($beyond)" \
+    "r > 0.1 and b == 0" r="${reached:-0}" b="${beyond:-1}"
+
+# 3. Bad input
+BASE_CASE="$e"
+bad() { local v; v=$(freshCopy "$1"); rm -rf "$v"/[1-9]* "$v"/0.[0-9]* "$v"/postProcessing; echo "$v"; }
+v=$(bad outside); sed -i 's/^lattice .*/lattice { extent ((2 2 -1) (3 3 2)); }/' "$(props "$v")"
+expectFailure "an extent outside the mesh" "lattice extent .* does not overlap the mesh's bounding box" runIn "$v" mpmFoam
+v=$(bad noExtent); sed -i 's/^lattice .*/lattice { extentWall { type slip; } }/' "$(props "$v")"
+expectFailure "extentWall without extent" "extentWall without extent" runIn "$v" mpmFoam
+v=$(bad inletWall); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); extentWall { type inlet; } }/' "$(props "$v")"
+expectFailure "an inlet as the extent's wall" "extentWall type inlet is not a wall of the lattice's extent \(valid: noSlip slip friction outlet\)" runIn "$v" mpmFoam
+v=$(bad region); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (0.9 1.1 2)); }/' "$(props "$v")"
+expectFailure "a seeding region beyond the extent" "enlarge the mesh \(or the MPM lattice's extent" runIn "$v" mpmSetParticles
+
+finish
