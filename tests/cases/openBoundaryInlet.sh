@@ -27,49 +27,8 @@ c="$SCRATCH/inletStream"
 cp -r "$CASES/inletStream" "$c"
 runApps "$c" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: inletStream run"; tail -20 "$c/log.mpmFoam"; exit 1; }
 
-res=$("$PY" - "$c" <<'PYEOF'
-import sys
-import numpy as np, mpmPost
-c = sys.argv[1]
-U, H, layerMass, perLayer, firstId = 1.0, 0.4, 0.04, 20, 200
-I = lambda t: np.where(t <= 0.1, 20*t*t, 0.2 + 4*(t - 0.1))
-def tOf(m):   # inverse of I
-    return np.sqrt(m/20) if m <= 0.2 else 0.1 + (m - 0.2)/4
-top = mpmPost.read_open_boundary(c, "top")
-out = mpmPost.read_open_boundary(c, "bottom")
-bal = mpmPost.read_open_boundary(c, "massBalance")
-t = top["time"]
-dev = np.abs(top["injectedMass"] - I(t)).max()
-whole = int((top["injectedPoints"] % perLayer != 0).sum())
-layers = int(top["injectedPoints"][-1]//perLayer)
-posErr, n = 0.0, 0
-for tw in mpmPost.times(c)[1:]:
-    T = float(tw)
-    ids = mpmPost.read_cloud_field(c, tw, "pointId").astype(int)
-    y = mpmPost.read_positions(c, tw)[:, 1]
-    s = ids >= firstId
-    k = (ids[s] - firstId)//perLayer
-    tk = np.array([tOf((kk + 0.5)*layerMass) for kk in k])
-    posErr = max(posErr, np.abs(y[s] - (H - U*(T - tk))).max())
-    n += s.sum()
-a, b = np.argmin(np.abs(t - 0.5)), len(t) - 1
-inLate = top["injectedMass"][b] - top["injectedMass"][a]
-outLate = out["removedMass"][b] - out["removedMass"][a]
-balCount = int((bal["presentPoints"] != bal["initialPoints"] + bal["injectedPoints"] - bal["removedPoints"]).sum())
-balMass = np.abs(bal["massError"]).max()/bal["initialMass"][0]
-print(len(t), dev, whole, layers, posErr, n, inLate, outLate, balCount, balMass, top["injectedMass"][-1], float(I(t[-1])))
-PYEOF
-)
-read -r rows dev whole layers posErr n inLate outLate balCount balMass injEnd intEnd <<< "$res"
-echo "    injected at t = 0.6: $injEnd kg ($layers layers), integral of the rate $intEnd kg"
-check "inlet: injected mass within half a layer (0.02 kg) of the rate's integral on every step ($rows), whole layers" \
-    "rows >= 600 and dev <= 0.02 + 1e-12 and whole == 0 and layers == 55" rows="$rows" dev="$dev" whole="$whole" layers="$layers"
-check "inlet: injected points at y = 0.4 - U (t - t_k) at the written times ($n points)" \
-    "n > 500 and e <= 1e-5" n="$n" e="$posErr"
-check "inlet to outlet: out = in over 0.5 < t < 0.6 (0.4 kg, within a layer)" \
-    "abs(o - i) <= 0.04 + 1e-12 and abs(i - 0.4) <= 0.04 + 1e-12" o="$outLate" i="$inLate"
-check "balance: present = initial + injected - removed (count exact, mass to round-off) every step" \
-    "bc == 0 and bm <= 1e-13" bc="$balCount" bm="$balMass"
+. "$CASES/inletStreamChecks"
+checkStream "$c" "inlet" "(0 0.4 0)" "(0 -1 0)" "(1 0 0)"
 
 # Restart from a written time
 r="$SCRATCH/restart"
