@@ -12,8 +12,10 @@
 #     ever leaves the mesh; seeding leaves out the points of a region that
 #     reach past the mesh and logs how many.
 #   * Decomposed, on 2 ranks with HDF5 point output, the rotated incline gives
-#     the serial positions to 1e-10; the lagrangian cloud output and parallel
-#     seeding on such a mesh stop with a message saying what to do instead.
+#     the serial positions to 1e-10; with the lagrangian cloud, seeded
+#     decomposed (decomposePar, mpmSetParticles -parallel): the seeded
+#     points equal the serial seeding's and the reconstructed final cloud
+#     the serial run's to 1e-10.
 #   * An outlet off the lattice box's sides: the rotated incline, frictionless,
 #     its downhill end an outlet patch: the block slides out through it,
 #     every point and its mass is booked as leaving there (the open
@@ -255,7 +257,6 @@ PYEOF
     check "pier bed ($spacing): points beside the pier move <= h^2/R = 4 mm" "n <= 4e-3" n="${near:-1}"
 done
 
-# --- not yet supported, and bad spacings -----------------------------------
 # --- decomposed: the lattice's own decomposition ---------------------------
 # The rotated incline with HDF5 point output, serial and on 2 ranks (scotch
 # splits the mesh's cells; a lattice cell goes to the rank whose cell holds
@@ -288,12 +289,46 @@ check "2 ranks on the rotated mesh: final positions of $np points equal the seri
     "d <= 1e-10" d="${dmax:-1}"
 grep -q "MPM lattice decomposition: lattice cells per processor 2(" "$hp/log.mpmFoam"
 check "the log gives the lattice's decomposition" "r == 0" r=$?
-# The lagrangian cloud cannot hold a point outside its processor's cells
-decomposeCase "$r" 2 scotch
-expectFailure "decomposed run on a mesh that is not a box, cloud output" \
-    "writes its points with pointOutput hdf5" runIn "$r" mpirun -np 2 --oversubscribe mpmFoam -parallel
-expectFailure "decomposed seeding on a mesh that is not a box" \
-    "seed serially and then decomposePar" runIn "$r" mpirun -np 2 --oversubscribe mpmSetParticles -parallel -overwrite
+# The lagrangian cloud (pointOutput foam) on 2 ranks, seeded decomposed:
+# decomposePar, then mpmSetParticles -parallel, then mpmFoam -parallel. A
+# point lives on the rank of its lattice cell and is written on the rank of
+# its mesh cell (cloud/meshCellSearch.H). The seeded cloud and the final one
+# equal the serial run's, and reconstructPar gathers them.
+f=$(copyTutorial mpm/elasticDisks rotatedFoamPar)
+cp -r "$r/constant" "$r/system" "$f/"
+rm -rf "$f/constant/polyMesh"
+runApps "$f" blockMesh || { echo "FAIL: mesh"; failures=$((failures + 1)); }
+# Split the block in two (blockMesh's 60 x 20 cells, x fastest: the cells
+# below 0.5 m along the floor on processor 0), so that lattice cells, not
+# rotated with the mesh, straddle the processors' boundary
+"$PY" - "$f/constant/cellDecomposition" <<'PYEOF'
+import sys
+cells = [0 if i < 10 else 1 for j in range(20) for i in range(60)]
+open(sys.argv[1], "w").write(
+    "FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }\n"
+    + "%d\n(\n%s\n)\n" % (len(cells), "\n".join(map(str, cells))))
+PYEOF
+decomposeCase "$f" 2 manual 'dataFile "cellDecomposition";'
+(cd "$f" && mpirun -np 2 --oversubscribe mpmSetParticles -parallel > log.mpmSetParticles 2>&1) \
+    || { echo "FAIL: decomposed seeding"; tail -20 "$f/log.mpmSetParticles"; failures=$((failures + 1)); }
+seeded=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$r" "$f" 0 --fields U mass)
+echo "$seeded" | sed 's/^/    seeded: /'
+check "decomposed seeding on a mesh that is not a box: the serial seeding's points (same ids, positions and masses)" \
+    "i == 1 and p == 0 and m == 0" i="$(echo "$seeded" | awk '$1=="ids"{print $3}')" \
+    p="$(echo "$seeded" | awk '$1=="positions"{print $2}')" m="$(echo "$seeded" | awk '$1=="mass"{print $2}')"
+nSerial=$(sed -n 's/^Writing \([0-9]*\) material points.*/\1/p' "$r/log.mpmSetParticles")
+nPar=$(sed -n 's/^Writing \([0-9]*\) material points.*/\1/p' "$f/log.mpmSetParticles")
+check "decomposed seeding: the logged count is the serial one ($nPar, $nSerial)" "a == b" a="${nPar:-0}" b="${nSerial:--1}"
+nMoved=$(sed -n 's/^Material points: \([0-9]*\) written by the processor of their mesh cell.*/\1/p' "$f/log.mpmSetParticles" | tail -1)
+check "decomposed seeding: points of one rank's lattice cells written by another rank ($nMoved)" "n > 0" n="${nMoved:-0}"
+(cd "$f" && mpirun -np 2 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1) \
+    || { echo "FAIL: decomposed run, cloud output"; tail -30 "$f/log.mpmFoam"; failures=$((failures + 1)); }
+(cd "$f" && reconstructPar -latestTime > log.reconstructPar 2>&1) \
+    || { echo "FAIL: reconstructPar"; tail -20 "$f/log.reconstructPar"; failures=$((failures + 1)); }
+final=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$r" "$f" 0.5 --fields U)
+echo "$final" | sed 's/^/    final: /'
+check "decomposed run with cloud output: the reconstructed cloud at 0.5 equals the serial run's (positions within 1e-10)" \
+    "i == 1 and p <= 1e-10" i="$(echo "$final" | awk '$1=="ids"{print $3}')" p="$(echo "$final" | awk '$1=="positions"{print $2}')"
 c=$(copyTutorial mpm/elasticDisks coarse)
 cp "$g/system/blockMeshDict" "$c/system/"
 printf 'lattice { spacing 2; }\n' >> "$(props "$c")"

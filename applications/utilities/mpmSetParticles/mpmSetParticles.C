@@ -81,14 +81,6 @@ int main(int argc, char *argv[])
         const materialLibrary materials(mpmDict, false);
         const meshLattice lattice(mesh, mpmDict);
         lattice.report(Info);
-        if (Pstream::parRun() && !lattice.cellsAreNodes())
-        {
-            FatalErrorInFunction
-                << "On a mesh that is not a uniform box, seed serially and then"
-                << " decomposePar: a point seeded here belongs to the processor of"
-                << " its lattice cell, which may not hold its mesh cell."
-                << exit(FatalError);
-        }
 
         if (!seedDict.isDict("regions"))
         {

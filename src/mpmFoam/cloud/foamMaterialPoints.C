@@ -1,5 +1,6 @@
 #include "foamMaterialPoints.H"
 #include "materialPointsIO.H"
+#include "meshCellSearch.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -11,6 +12,9 @@ namespace Foam
 void Foam::foamMaterialPoints::read(mpm::Particles& points)
 {
     readMaterialPoints(mesh_, points, materialNames_);
+    // Written per processor's mesh cells; run per lattice owner, which on
+    // a lattice of its own need not be the same processor
+    if (!lattice_.cellsAreNodes()) toLatticeOwners(lattice_, points);
 }
 
 void Foam::foamMaterialPoints::write(const mpm::Particles& points)

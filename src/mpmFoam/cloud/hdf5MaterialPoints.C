@@ -1,4 +1,5 @@
 #include "hdf5MaterialPoints.H"
+#include "meshCellSearch.H"
 #include "hdf5File.H"
 #include "xdmfSeries.H"
 #include "materialPointsIO.H"
@@ -361,13 +362,16 @@ void Foam::hdf5MaterialPoints::read(mpm::Particles& P)
         Info<< "No HDF5 checkpoint at time " << runTime.timeName()
             << ": reading the lagrangian cloud" << nl;
         readMaterialPoints(mesh_, P, materialNames_);
+        if (!lattice_.cellsAreNodes()) toLatticeOwners(lattice_, P);
         readCloud_ = true;
         return;
     }
 
     Info<< "Reading the material points of " << file << nl;
     readFile(file, P);
-    if (Pstream::parRun()) distribute(P);
+    // Points of this rank's cells stay where they are (all of them when the
+    // processor count is the writer's); the others go to their owners
+    toLatticeOwners(lattice_, P);
 }
 
 void Foam::hdf5MaterialPoints::readFile(const fileName& file, mpm::Particles& P) const
@@ -437,40 +441,3 @@ void Foam::hdf5MaterialPoints::readFile(const fileName& file, mpm::Particles& P)
     });
 }
 
-void Foam::hdf5MaterialPoints::distribute(mpm::Particles& P) const
-{
-    // Owner of every lattice cell: each rank marks its own cells
-    const mpm::Lattice& L = lattice_.lattice();
-    const label nCells = label(L.nCells[0])*L.nCells[1]*L.nCells[2];
-    labelList owner(nCells, -1);
-    for (const auto& r : lattice_.ownedLatticeCells())
-    {
-        owner[L.cellIndex(r[0], r[1], r[2])] = Pstream::myProcNo();
-    }
-    Pstream::listCombineGather(owner, maxEqOp<label>());
-    Pstream::listCombineScatter(owner);
-
-    // Points of this rank's cells stay where they are (all of them when the
-    // processor count is the writer's); the others go to their owners.
-    std::vector<std::vector<char>> send(comm_.size()), recv;
-    std::vector<mpm::Index> leaving;
-    for (label p = 0; p < P.size(); ++p)
-    {
-        const point x(P.x[0][p], P.x[1][p], P.x[2][p]);
-        label ijk[3];
-        lattice_.indicesOf(x, ijk);
-        const label q = owner[L.cellIndex(ijk[0], ijk[1], ijk[2])];
-        if (q < 0)
-        {
-            FatalErrorInFunction
-                << "Material point " << label(P.id[p]) << " at " << x
-                << " lies in no cell of the mesh" << exit(FatalError);
-        }
-        if (q == Pstream::myProcNo()) continue;
-        P.pack(p, send[q]);
-        leaving.push_back(p);
-    }
-    comm_.exchange(send, recv, false);
-    P.remove(leaving);
-    for (const std::vector<char>& buf : recv) P.unpack(buf);
-}

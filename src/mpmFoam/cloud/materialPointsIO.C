@@ -1,4 +1,5 @@
 #include "materialPointsIO.H"
+#include "meshCellSearch.H"
 #include "passiveParticleCloud.H"
 #include "IOField.H"
 #include "symmTensor.H"
@@ -178,10 +179,23 @@ void Foam::writeMaterialPoints
 (
     const fvMesh& mesh,
     const meshLattice& ml,
-    const mpm::Particles& points,
+    const mpm::Particles& lattices,
     const wordList& materialNames
 )
 {
+    // Decomposed on a lattice of its own, a point is on the processor of its
+    // lattice cell: the cloud is written per processor's mesh cells, so a
+    // copy of the points goes there first (meshCellSearch.H)
+    const bool move = Pstream::parRun() && !ml.cellsAreNodes();
+    mpm::Particles moved;
+    if (move)
+    {
+        moved = lattices;
+        const label n = toMeshCellRanks(mesh, moved);
+        Info<< "Material points: " << n << " written by the processor of"
+            << " their mesh cell, not of their lattice cell" << nl;
+    }
+    const mpm::Particles& points = move ? moved : lattices;
     passiveParticleCloud cloud(mesh, materialPointsCloudName, IDLList<passiveParticle>());
     const label n = points.size();
     // Locating particles builds the mesh's tet decomposition, and the cloud
@@ -192,7 +206,10 @@ void Foam::writeMaterialPoints
     for (label p = 0; p < n; ++p)
     {
         const point x(points.x[0][p], points.x[1][p], points.x[2][p]);
-        const label celli = ml.fvCellOf(x);
+        label celli = ml.fvCellOf(x);
+        // Moved to the processor whose cells hold it, or whose box does
+        // (a point a hair outside the mesh, on a wall): the nearest cell
+        if (celli < 0 && move) celli = mesh.findNearestCell(x);
         if (celli < 0)
         {
             FatalErrorInFunction

@@ -52,24 +52,6 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     }
 
     pointFormat_ = materialPointsFormat::New(dict_, mesh, lattice_, comm_, materials_.names());
-    if
-    (
-        !lattice_.cellsAreNodes() && Pstream::parRun()
-     && dict_.getOrDefault<word>("pointOutput", "foam") == "foam"
-    )
-    {
-        // A point belongs to the rank owning its lattice cell, which may
-        // not hold the mesh cell around it: the lagrangian cloud, written
-        // per processor's cells, cannot place it
-        FatalIOErrorInFunction(dict_)
-            << "A decomposed run on a mesh that is not a uniform box writes"
-            << " its points with pointOutput hdf5 (one file for all ranks);"
-            << " the lagrangian cloud (pointOutput foam) needs each point on"
-            << " the processor of its mesh cell." << nl
-            << "Add pointOutput hdf5; to constant/mpmProperties (the seeded"
-            << " cloud at time 0 is still read), or run serially."
-            << exit(FatalIOError);
-    }
     {
         const clockTime timer;
         pointFormat_->read(system_.particles());

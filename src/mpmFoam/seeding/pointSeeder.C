@@ -1,4 +1,5 @@
 #include "pointSeeder.H"
+#include "meshCellSearch.H"
 #include "searchableSurface.H"
 #include "volumeType.H"
 #include "Time.H"
@@ -382,12 +383,25 @@ Foam::label Foam::seedRegions
         surf->getVolumeType(candidates, inside);
         if (!ml.cellsAreNodes())
         {
-            // The lattice is its own: its cells reach beyond the mesh
-            label outsideMesh = 0;
+            // The lattice is its own: its cells reach beyond the mesh.
+            // Decomposed, a point of this rank's lattice cells may lie in
+            // another rank's mesh cells: the mesh is asked as a whole
+            // (meshCellSearch.H), for the points this rank keeps; each is
+            // counted by the rank owning its lattice cell, as serially.
+            DynamicList<label> mine;
             forAll(candidates, i)
             {
-                if (inside[i] != volumeType::INSIDE || mesh.findCell(candidates[i]) >= 0) continue;
-                inside[i] = volumeType::OUTSIDE;
+                if (inside[i] != volumeType::INSIDE) continue;
+                label ijk[3];
+                ml.indicesOf(candidates[i], ijk);
+                if (ml.ownsLatticeCell(ijk[0], ijk[1], ijk[2])) mine.append(i);
+            }
+            const labelList where(meshCellRanks(mesh, UIndirectList<point>(candidates, mine)(), true));
+            label outsideMesh = 0;
+            forAll(mine, k)
+            {
+                if (where[k] >= 0) continue;
+                inside[mine[k]] = volumeType::OUTSIDE;
                 ++outsideMesh;
             }
             Info<< "    left out " << returnReduce(outsideMesh, sumOp<label>())
