@@ -13,7 +13,8 @@
 #      0.6 with a slip wall there: positions equal at every written time
 #      (1e-12 m): the extent's side is the same mirrored wall. And no point
 #      beyond 0.6; the cells beyond the extent have alpha.solid 0.
-#   3. Bad input: an extent outside the mesh, extentWall without extent,
+#   3. An inlet partly beyond the extent: the rate kept, nothing beyond.
+#   4. Bad input: an extent outside the mesh, extentWall without extent,
 #      an inlet extentWall, a seeding region beyond the extent.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
@@ -78,7 +79,33 @@ check "no point beyond the extent's side (largest x $xmax)" "x <= 0.6 + 1e-12" x
 check "the disk reached the side (alpha.solid $reached in the cells inside it) and the cells beyond have none ($beyond)" \
     "r > 0.1 and b == 0" r="${reached:-0}" b="${beyond:-1}"
 
-# 3. Bad input
+# 3. An inlet partly beyond the extent (the inlet stream of
+#    openBoundaryInlet.sh, its top patch off the lattice's sides with
+#    h = 0.019, the lattice cut at x = 0.1 by a slip extent wall): the part
+#    beyond lets nothing in, the rate is kept (within half a layer), and no
+#    point ever lies beyond the extent
+s3="$SCRATCH/inletBeyond"
+cp -r "$MPMFOAM_ROOT/tests/cases/openBoundaryCases/inletStream" "$s3"
+sed -i 's/^timeStep .*/&\nlattice         { spacing 0.019; extent ((-1 -1 -1) (0.1 1 1)); extentWall { type slip; } }/' "$(props "$s3")"
+sed -i 's/min (0 0.1 0); max (0.2 0.2 0.02);/min (0 0.1 0); max (0.09 0.2 0.02);/' "$s3/system/mpmSetParticlesDict"
+sed -i 's/^endTime .*/endTime 0.3;/' "$s3/system/controlDict"
+runApps "$s3" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: inlet beyond the extent run"; tail -20 "$s3/log.mpmFoam"; failures=$((failures + 1)); }
+layerMass=$(sed -n 's/.*a layer of [0-9]* points (mass \([0-9.eE+-]*\)).*/\1/p' "$s3/log.mpmFoam" | head -1)
+read -r dev xmax <<< "$("$PY" - "$s3" <<'PYEOF'
+import sys, numpy as np, mpmPost
+c = sys.argv[1]
+top = mpmPost.read_open_boundary(c, "top")
+t = top["time"]
+I = np.where(t <= 0.1, 20*t*t, 0.2 + 4*(t - 0.1))
+xmax = max(mpmPost.read_positions(c, tw)[:, 0].max() for tw in mpmPost.times(c))
+print(np.abs(top["injectedMass"] - I).max(), xmax)
+PYEOF
+)"
+check "an inlet partly beyond the extent: injected mass within half a layer ($layerMass kg) of the rate's integral ($dev)" \
+    "d <= 0.5*m + 1e-12 and m > 0" d="${dev:-1}" m="${layerMass:-0}"
+check "and no point beyond the extent (largest x $xmax; the lattice ends at 5 x 0.019 = 0.095)" "x <= 0.095 + 1e-12" x="${xmax:-1}"
+
+# 4. Bad input
 BASE_CASE="$e"
 bad() { local v; v=$(freshCopy "$1"); rm -rf "$v"/[1-9]* "$v"/0.[0-9]* "$v"/postProcessing; echo "$v"; }
 v=$(bad outside); sed -i 's/^lattice .*/lattice { extent ((2 2 -1) (3 3 2)); }/' "$(props "$v")"

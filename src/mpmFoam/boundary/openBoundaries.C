@@ -180,6 +180,7 @@ Foam::List<Foam::point> Foam::openBoundaries::planeLayer
         for (label i = 0; i < 3; ++i) tri[t][i] = uv(pts[surface[t][i]]);
     }
     DynamicList<point> layer;
+    label beyond = 0;
     for (label j = 0; j < count[1]; ++j)
     for (label i = 0; i < count[0]; ++i)
     {
@@ -189,14 +190,25 @@ Foam::List<Foam::point> Foam::openBoundaries::planeLayer
         {
             if (inTriangle(q, tri[t][0], tri[t][1], tri[t][2])) { inside = true; break; }
         }
-        if (inside) layer.append(origin + q.x()*e[0] + q.y()*e[1]);
+        if (!inside) continue;
+        const point x(origin + q.x()*e[0] + q.y()*e[1]);
+        // The part of the patch beyond a lattice extent lets nothing in
+        // (a hair inside the plane: its points sit on the lattice's side)
+        if (!lattice_.insideLattice(x + 1e-6*L.h*inward)) { ++beyond; continue; }
+        layer.append(x);
+    }
+    if (beyond)
+    {
+        Info<< "    " << patch << ": " << beyond << " points of a layer lie beyond"
+            << " the lattice's extent and are left out" << nl;
     }
     if (layer.empty())
     {
         FatalIOErrorInFunction(d)
             << "The inlet " << patch << " holds no point of a layer at the "
             << "lattice spacing " << L.h << " and pointsPerCell " << ppc
-            << ": it is smaller than the spacing between points" << exit(FatalIOError);
+            << (beyond ? ": it lies beyond the lattice's extent" : ": it is"
+                " smaller than the spacing between points") << exit(FatalIOError);
     }
     return List<point>(layer);
 }

@@ -203,9 +203,8 @@ void conditionsBeyondMesh
     if (counts[0] + counts[1] + counts[2])
     {
         Info<< "    lattice faces beyond the mesh: " << counts[0] << " take the"
-            << " condition of the nearest patch, " << counts[1] << " beyond"
-            << " an inlet are free (outlet beyondMesh), " << counts[2]
-            << " noSlip" << nl;
+            << " condition of the nearest patch, " << counts[1] << " are"
+            << " free (outlet beyondMesh), " << counts[2] << " noSlip" << nl;
     }
 }
 
