@@ -20,6 +20,7 @@
 #     and across the stream within the patch (0 to 0.2 m);
 #   - the balance, initial + injected - removed = present, on every step,
 #     and what leaves through the outlet once the stream reaches it.
+#   The rotated case also on 2 ranks: the serial cloud.
 #   3. bad input: an inlet off the box that is not one plane.
 # A wrong normal, layer spacing, point volume or Dirichlet velocity breaks
 # the positions or the mass; a missing inlet condition on the nodes lets
@@ -53,6 +54,21 @@ runApps "$r" mpmSetParticles mpmFoam || { echo "FAIL: rotated run"; tail -20 "$r
 # The top's plane through the rotated (0 0.4 0); inward the rotated -y;
 # across the rotated x
 checkStream "$r" "rotated 30 deg" "(-0.2 0.3464101615137755 0)" "($s -$co 0)" "($co $s 0)" levelSet
+
+# The rotated case on 2 ranks (scotch): every rank builds the same layer
+# from the gathered patch and adds the points of its lattice cells; the
+# cloud at 0.6 is the serial one
+rp="$SCRATCH/rotatedPar"
+cp -r "$r" "$rp"
+rm -rf "$rp"/0.[0-9]* "$rp"/[1-9]* "$rp"/postProcessing "$rp"/processor*
+decomposeCase "$rp" 2 scotch
+(cd "$rp" && mpirun -np 2 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1) \
+    || { echo "FAIL: rotated, 2 ranks"; tail -20 "$rp/log.mpmFoam"; failures=$((failures + 1)); }
+cmp=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$r" "$rp" 0.6 --fields U)
+echo "$cmp" | sed 's/^/    2 ranks: /'
+check "rotated 30 deg on 2 ranks: the serial cloud at 0.6 (ids, positions within 1e-10)" \
+    "i == 1 and p <= 1e-10 and n > 500" i="$(echo "$cmp" | awk '$1=="ids"{print $3}')" \
+    p="$(echo "$cmp" | awk '$1=="positions"{print $2}')" n="$(echo "$cmp" | awk '$1=="count"{print $2}')"
 
 # 3. Bad input: an inlet off the box that is not one plane (the top and the
 #    right side as one patch)
