@@ -76,11 +76,18 @@ MPM_HOST_DEVICE inline void levelSetWallNode
     for (int d = 0; d < 3; ++d) v[d][I] = u[d] + vw[d];
 }
 
+// Whether wall w is open (an outlet or an inlet); spelled out rather than
+// isOpen(), a host function, since the CUDA back-end runs these bodies
+MPM_HOST_DEVICE inline bool levelSetWallOpen(const LevelSetView& ls, int w)
+{
+    return ls.type[w] == int(WallType::outlet) || ls.type[w] == int(WallType::inlet);
+}
+
 // The velocity of wall w's surface: a moving wall's; an open wall's (an
 // inlet's velocity is its material's, not its own) zero
 MPM_HOST_DEVICE inline Real levelSetSurfaceVelocity(const LevelSetView& ls, int w, int a)
 {
-    return isOpen(WallType(ls.type[w])) ? Real(0) : ls.velocity[a][w];
+    return levelSetWallOpen(ls, w) ? Real(0) : ls.velocity[a][w];
 }
 
 // Signed distance of x from the closest-point plane of node I, the plane
@@ -162,7 +169,7 @@ MPM_HOST_DEVICE inline int levelSetContainPoint
         if (worst >= 0) break;
         // Beyond an outlet or an inlet the point leaves, where it is (on
         // the first pass: a point put back from a wall stays)
-        if (isOpen(WallType(ls.type[through])) && !moved) return 2 + through;
+        if (levelSetWallOpen(ls, through) && !moved) return 2 + through;
         const Real push = -worst + 1e-9*L.h;
         for (int a = 0; a < 3; ++a) x[a] += push*n[a];
         // The velocity relative to the wall loses its approaching part
