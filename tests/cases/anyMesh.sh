@@ -38,7 +38,9 @@
 #     the box's ghost nodes, outside the mesh hence inside its patches'
 #     level set, gave planes to the points beside the mirrored faces.
 #   * A lattice spacing too coarse for the mesh and one that is not positive
-#     stop with a message. (A fluid on such a mesh: anyMeshCoupled.sh.)
+#     stop with a message; so does one that does not divide a periodic
+#     length, naming spacings that do (the one it names runs). (A fluid on
+#     such a mesh: anyMeshCoupled.sh.)
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -339,4 +341,20 @@ c=$(copyTutorial mpm/elasticDisks negative)
 printf 'lattice { spacing -0.05; }\n' >> "$(props "$c")"
 runIn "$c" blockMesh > /dev/null 2>&1
 expectFailure "lattice spacing not positive" "Keyword spacing = -0.05 is out of range \(0, inf\)" runIn "$c" mpmSetParticles
+
+# A periodic (cyclic) direction on a graded mesh: a spacing that does not
+# divide the period names spacings that do, and the one it names runs
+p=$(copyTutorial mpm/inclinedPlaneFlow periodic)
+sed -i 's/simpleGrading (1 1 1)/simpleGrading (1 2 1)/' "$p/system/blockMeshDict"
+sed -i 's/^endTime .*/endTime 0.002;/' "$p/system/controlDict"
+printf 'lattice { spacing 0.0006; }\n' >> "$(props "$p")"
+runApps "$p" blockMesh mpmSetParticles || { echo "FAIL: periodic set-up"; failures=$((failures + 1)); }
+expectFailure "a spacing that does not divide the periodic length" \
+    "The mesh is 0.002 long in direction 0: give a lattice spacing that divides it, e.g. lattice \{ spacing 0.0005; \} \(4 cells\) or 0.000666666+7 \(3 cells\)" \
+    runIn "$p" mpmFoam
+sed -i 's/^lattice .*/lattice { spacing 0.0006666666667; }/' "$(props "$p")"
+rm -rf "$p"/0.0*
+runApps "$p" mpmFoam
+grep -q "downslope periodic" "$p/log.mpmFoam"
+check "the spacing it names runs, the cyclic pair periodic" "r == 0" r=$?
 finish

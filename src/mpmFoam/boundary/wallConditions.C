@@ -359,14 +359,27 @@ mpm::BoundarySpec Foam::readWallConditions
                 const mpm::WallType t = spec.conditions[condition].type;
                 if (t == mpm::WallType::periodic)
                 {
+                    // A cyclic on the mesh's bounding box misses the
+                    // lattice's side when the spacing does not divide the
+                    // period: name spacings that do
+                    const boundBox bb(mesh.points(), true);
+                    const vector nf(pp.faceNormals()[facei]);
+                    direction a = 0;
+                    for (direction i = 1; i < 3; ++i) if (mag(nf[i]) > mag(nf[a])) a = i;
+                    const scalar len = bb.span()[a];
+                    const label n0 = max(label(1), label(std::floor(len/L.h))), n1 = n0 + 1;
                     FatalErrorInFunction
                         << "Patch " << pp.name() << " is " << mpm::wallTypeName(t)
                         << " but its face " << facei << " at " << fc << " is "
                         << "not on a side of the MPM lattice's box "
                         << "(origin " << point(L.origin[0], L.origin[1], L.origin[2])
                         << ", h " << L.h << "): periodic patches must lie on"
-                        << " its sides for now (walls, outlets and inlets may"
-                        << " lie anywhere)" << exit(FatalError);
+                        << " its sides (walls, outlets and inlets may lie"
+                        << " anywhere)." << nl << "The mesh is " << len
+                        << " long in direction " << label(a) << ": give a lattice"
+                        << " spacing that divides it, e.g. lattice { spacing "
+                        << len/n1 << "; } (" << n1 << " cells) or " << len/n0
+                        << " (" << n0 << " cells)" << exit(FatalError);
                 }
                 offBox[pp.index()].append(pp.start() + facei);
                 continue;
