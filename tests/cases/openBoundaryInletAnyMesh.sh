@@ -21,7 +21,8 @@
 #   - the balance, initial + injected - removed = present, on every step,
 #     and what leaves through the outlet once the stream reaches it.
 #   The rotated case also on 2 ranks: the serial cloud.
-#   3. bad input: an inlet off the box that is not one plane.
+#   3. bad input: an inlet off the box that is not one plane, and one partly
+#      on a side of the lattice's box and partly off it.
 # A wrong normal, layer spacing, point volume or Dirichlet velocity breaks
 # the positions or the mass; a missing inlet condition on the nodes lets
 # the stream slow down at the inlet (its points then lag behind U (t - t_k)).
@@ -79,5 +80,14 @@ sed -i 's/    right  { type wall; faces ( (1 2 6 5) ); }//; s/    top    { type 
 sed -i 's/"(left|right)"  { type slip; }/left { type slip; }/' "$(props "$b")"
 runApps "$b" blockMesh mpmSetParticles || { echo "FAIL: notPlanar set-up"; failures=$((failures + 1)); }
 expectFailure "an inlet off the box that is not one plane" "The inlet top is not one plane: its face at .* has the normal" runIn "$b" mpmFoam
+# ... and one partly on a side of the lattice's box (the left side, x = 0)
+# and partly off it (the top)
+b2="$SCRATCH/partlyOnSide"
+cp -r "$CASES/inletStream" "$b2"
+sed -i 's/^timeStep .*/&\nlattice         { spacing 0.019; }/' "$(props "$b2")"
+sed -i 's/    left   { type wall; faces ( (0 4 7 3) ); }//; s/    top    { type patch; faces ( (3 7 6 2) ); }/    top    { type patch; faces ( (3 7 6 2) (0 4 7 3) ); }/' "$b2/system/blockMeshDict"
+sed -i 's/"(left|right)"  { type slip; }/right { type slip; }/' "$(props "$b2")"
+runApps "$b2" blockMesh mpmSetParticles || { echo "FAIL: partlyOnSide set-up"; failures=$((failures + 1)); }
+expectFailure "an inlet partly on a side of the box and partly off it" "The inlet top lies partly on a side of the lattice's box and partly off it \(10 faces\)" runIn "$b2" mpmFoam
 
 finish

@@ -244,9 +244,35 @@ void Foam::openBoundaries::readInlet
         }
         side = s;
     }
+    // Its faces off the box's sides (a mesh that is not a uniform box)
     const label patchi = mesh_.boundaryMesh().findPatchID(patch_[open]);
-    const bool offBox = patchi >= 0 && !lattice_.cellsAreNodes()
-        && returnReduce(mesh_.boundaryMesh()[patchi].size(), sumOp<label>()) > 0 && side < 0;
+    label offFaces = 0;
+    if (patchi >= 0 && !lattice_.cellsAreNodes())
+    {
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        const scalar tol = 1e-6*L.h;
+        forAll(pp, f)
+        {
+            const point& fc = pp.faceCentres()[f];
+            bool onSide = false;
+            for (direction ax = 0; ax < 3; ++ax)
+            {
+                if (!L.solved[ax]) continue;
+                onSide = onSide || mag(fc[ax] - L.origin[ax]) < tol
+                    || mag(fc[ax] - L.origin[ax] - L.length(ax)) < tol;
+            }
+            offFaces += !onSide;
+        }
+    }
+    reduce(offFaces, sumOp<label>());
+    const bool offBox = offFaces > 0;
+    if (side >= 0 && offBox)
+    {
+        FatalIOErrorInFunction(d)
+            << "The inlet " << patch_[open] << " lies partly on a side of the "
+            << "lattice's box and partly off it (" << offFaces << " faces): an "
+            << "inlet must be one plane" << exit(FatalIOError);
+    }
     if (side < 0 && !offBox)
     {
         FatalIOErrorInFunction(d)
@@ -260,13 +286,6 @@ void Foam::openBoundaries::readInlet
     triSurface surface;
     if (offBox)
     {
-        if (side >= 0)
-        {
-            FatalIOErrorInFunction(d)
-                << "The inlet " << patch_[open] << " lies partly on a side "
-                << "of the lattice's box and partly off it: an inlet must "
-                << "be one plane" << exit(FatalIOError);
-        }
         const polyPatch& pp = mesh_.boundaryMesh()[patchi];
         surface = triangulate(mesh_, identity(pp.size(), pp.start()));
         in.inward = -planeNormal(surface, patch_[open], d);
