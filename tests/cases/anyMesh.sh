@@ -39,8 +39,9 @@
 #     level set, gave planes to the points beside the mirrored faces.
 #   * A lattice spacing too coarse for the mesh and one that is not positive
 #     stop with a message; so does one that does not divide a periodic
-#     length, naming spacings that do (the one it names runs). (A fluid on
-#     such a mesh: anyMeshCoupled.sh.)
+#     length, naming spacings that do (the one it names runs); without a
+#     spacing, the default is rounded to divide it. (A fluid on such a
+#     mesh: anyMeshCoupled.sh.)
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -357,4 +358,13 @@ rm -rf "$p"/0.0*
 runApps "$p" mpmFoam
 grep -q "downslope periodic" "$p/log.mpmFoam"
 check "the spacing it names runs, the cyclic pair periodic" "r == 0" r=$?
+# Without a spacing, the default (the mean cell size, here 0.000559 with 12
+# rows) is rounded to divide the period, and said so
+q=$(copyTutorial mpm/inclinedPlaneFlow periodicDefault)
+sed -i 's/simpleGrading (1 1 1)/simpleGrading (1 2 1)/; s/^ny .*/ny      12;/' "$q/system/blockMeshDict"
+sed -i 's/^endTime .*/endTime 0.002;/' "$q/system/controlDict"
+runApps "$q" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: periodic default run"; tail -20 "$q/log.mpmFoam"; failures=$((failures + 1)); }
+grep -qE "default spacing 0.00055[0-9]* rounded to 0.0005 to divide the periodic length 0.002 \(patch upslope, 4 cells\)" "$q/log.mpmFoam" \
+    && grep -q "downslope periodic" "$q/log.mpmFoam"
+check "no spacing on a periodic graded mesh: the default rounded to divide the period (0.0005), the run periodic" "r == 0" r=$?
 finish

@@ -2,6 +2,8 @@
 #include "cellModel.H"
 #include "boundBox.H"
 #include "Pair.H"
+#include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 #include "choice.H"
 #include "knownKeywords.H"
 #include "OStringStream.H"
@@ -121,9 +123,10 @@ void Foam::meshLattice::build(const dictionary& mpmDict)
         FatalErrorInFunction << "Mesh has no solved direction" << exit(FatalError);
     }
     const bool given = ld.found("spacing");
-    const scalar h =
+    scalar h =
         given ? readBounded(ld, "spacing", 0, numberRange{0, GREAT, false}, false)
       : meanCellSize();
+    if (!given && !box) h = dividePeriods(h);
     const bool extent = ld.found("extent");
     if (!extent && ld.found("extentWall"))
     {
@@ -208,6 +211,37 @@ void Foam::meshLattice::readExtent(const dictionary& ld)
                 << exit(FatalIOError);
         }
     }
+}
+
+Foam::scalar Foam::meshLattice::dividePeriods(scalar h) const
+{
+    // A cyclic pair must lie on the lattice's sides: the default spacing is
+    // rounded to divide the mesh's length along each periodic direction
+    // (the last one exactly; a given spacing is taken as given, and checked
+    // by readWallConditions)
+    const boundBox bb(mesh_.points(), true);
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (!isA<cyclicPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp)) continue;
+        // The patch's axis, from any rank holding a face of it
+        vector n(Zero);
+        if (pp.size()) n = pp.faceNormals()[0];
+        reduce(n, maxMagSqrOp<vector>());
+        if (magSqr(n) == 0) continue;
+        direction a = 0;
+        for (direction i = 1; i < 3; ++i) if (mag(n[i]) > mag(n[a])) a = i;
+        if (mesh_.solutionD()[a] <= 0) continue;
+        const scalar len = bb.span()[a];
+        const label cells = max(label(1), label(std::round(len/h)));
+        if (mag(cells*h - len) > 1e-6*h)
+        {
+            Info<< "MPM lattice: default spacing " << h << " rounded to " << len/cells
+                << " to divide the periodic length " << len << " (patch "
+                << pp.name() << ", " << cells << " cells)" << nl;
+            h = len/cells;
+        }
+    }
+    return h;
 }
 
 Foam::scalar Foam::meshLattice::meanCellSize() const
