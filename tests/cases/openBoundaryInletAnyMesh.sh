@@ -71,23 +71,24 @@ check "rotated 30 deg on 2 ranks: the serial cloud at 0.6 (ids, positions within
     "i == 1 and p <= 1e-10 and n > 500" i="$(echo "$cmp" | awk '$1=="ids"{print $3}')" \
     p="$(echo "$cmp" | awk '$1=="positions"{print $2}')" n="$(echo "$cmp" | awk '$1=="count"{print $2}')"
 
-# 3. Bad input: an inlet off the box that is not one plane (the top and the
-#    right side as one patch)
-b="$SCRATCH/notPlanar"
-cp -r "$CASES/inletStream" "$b"
-sed -i 's/^timeStep .*/&\nlattice         { spacing 0.019; }/' "$(props "$b")"
-sed -i 's/    right  { type wall; faces ( (1 2 6 5) ); }//; s/    top    { type patch; faces ( (3 7 6 2) ); }/    top    { type patch; faces ( (3 7 6 2) (1 2 6 5) ); }/' "$b/system/blockMeshDict"
-sed -i 's/"(left|right)"  { type slip; }/left { type slip; }/' "$(props "$b")"
-runApps "$b" blockMesh mpmSetParticles || { echo "FAIL: notPlanar set-up"; failures=$((failures + 1)); }
+# 3. Bad input: the top patch (off the lattice's sides, h = 0.019) joined by
+#    a side of the channel, which leaves its own patch and walls entry
+# badInlet <name> <side patch> <its face> <the remaining wall>: the case
+badInlet()
+{
+    local v="$SCRATCH/$1"
+    cp -r "$CASES/inletStream" "$v"
+    sed -i 's/^timeStep .*/&\nlattice         { spacing 0.019; }/' "$(props "$v")"
+    sed -i "s/    $2 *{ type wall; faces ( $3 ); }//; s/    top    { type patch; faces ( (3 7 6 2) ); }/    top    { type patch; faces ( (3 7 6 2) $3 ); }/" "$v/system/blockMeshDict"
+    sed -i "s/\"(left|right)\"  { type slip; }/$4 { type slip; }/" "$(props "$v")"
+    runApps "$v" blockMesh mpmSetParticles || { echo "FAIL: $1 set-up" >&2; failures=$((failures + 1)); }
+    echo "$v"
+}
+# The right side (off the lattice's sides too): not one plane
+b=$(badInlet notPlanar right "(1 2 6 5)" left)
 expectFailure "an inlet off the box that is not one plane" "The inlet top is not one plane: its face at .* has the normal" runIn "$b" mpmFoam
-# ... and one partly on a side of the lattice's box (the left side, x = 0)
-# and partly off it (the top)
-b2="$SCRATCH/partlyOnSide"
-cp -r "$CASES/inletStream" "$b2"
-sed -i 's/^timeStep .*/&\nlattice         { spacing 0.019; }/' "$(props "$b2")"
-sed -i 's/    left   { type wall; faces ( (0 4 7 3) ); }//; s/    top    { type patch; faces ( (3 7 6 2) ); }/    top    { type patch; faces ( (3 7 6 2) (0 4 7 3) ); }/' "$b2/system/blockMeshDict"
-sed -i 's/"(left|right)"  { type slip; }/right { type slip; }/' "$(props "$b2")"
-runApps "$b2" blockMesh mpmSetParticles || { echo "FAIL: partlyOnSide set-up"; failures=$((failures + 1)); }
-expectFailure "an inlet partly on a side of the box and partly off it" "The inlet top lies partly on a side of the lattice's box and partly off it \(10 faces\)" runIn "$b2" mpmFoam
+# The left side (x = 0, a side of the lattice's box): partly on, partly off
+b=$(badInlet partlyOnSide left "(0 4 7 3)" right)
+expectFailure "an inlet partly on a side of the box and partly off it" "The inlet top lies partly on a side of the lattice's box and partly off it \(10 faces\)" runIn "$b" mpmFoam
 
 finish

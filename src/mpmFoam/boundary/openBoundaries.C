@@ -250,19 +250,7 @@ void Foam::openBoundaries::readInlet
     if (patchi >= 0 && !lattice_.cellsAreNodes())
     {
         const polyPatch& pp = mesh_.boundaryMesh()[patchi];
-        const scalar tol = 1e-6*L.h;
-        forAll(pp, f)
-        {
-            const point& fc = pp.faceCentres()[f];
-            bool onSide = false;
-            for (direction ax = 0; ax < 3; ++ax)
-            {
-                if (!L.solved[ax]) continue;
-                onSide = onSide || mag(fc[ax] - L.origin[ax]) < tol
-                    || mag(fc[ax] - L.origin[ax] - L.length(ax)) < tol;
-            }
-            offFaces += !onSide;
-        }
+        forAll(pp, f) offFaces += latticeBoxSide(L, pp.faceCentres()[f]) < 0;
     }
     reduce(offFaces, sumOp<label>());
     const bool offBox = offFaces > 0;

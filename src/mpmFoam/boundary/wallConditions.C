@@ -136,6 +136,19 @@ void conditionsBeyondMesh
     const mpm::Lattice& L = ml.lattice();
     label beyondFree = -1, beyondNone = -1;
     label counts[3] = {0, 0, 0};   // own condition, free, no wall at all
+    // The condition "beyondMesh" of the given type, added once
+    auto beyond = [&](label& index, mpm::WallType type)
+    {
+        if (index < 0)
+        {
+            index = label(spec.conditions.size());
+            mpm::WallCondition c;
+            c.type = type;
+            spec.conditions.push_back(c);
+            names.append("beyondMesh");
+        }
+        return int(index);
+    };
     for (int side = 0; side < 6; ++side)
     {
         const int a = side/2, a1 = (a + 1) % 3, a2 = (a + 2) % 3;
@@ -151,24 +164,23 @@ void conditionsBeyondMesh
             point x(ml.cellCentre(label(L.cellIndex(r[0], r[1], r[2]))));
             if (L.solved[a]) x[a] = L.origin[a] + (side % 2 == 0 ? 0 : L.length(a));
             const mpm::Real xr[3] = {x.x(), x.y(), x.z()};
-            mpm::Real n[3];
+            mpm::Real n[3], nearestNormal[3] = {0, 0, 0};
             int nearest = -1;
             scalar best = GREAT;
             for (size_t w = 0; w < patchWalls.size(); ++w)
             {
                 const scalar d = mag(patchWalls[w].shape->distance(xr, n, 8*L.h));
-                if (d < best) { best = d; nearest = int(w); }
+                if (d < best)
+                {
+                    best = d;
+                    nearest = int(w);
+                    for (int k = 0; k < 3; ++k) nearestNormal[k] = n[k];
+                }
             }
             if (nearest < 0)
             {
                 // No level-set wall at all: a noSlip mirror, as before
-                if (beyondNone < 0)
-                {
-                    beyondNone = label(spec.conditions.size());
-                    spec.conditions.push_back(mpm::WallCondition{});
-                    names.append("beyondMesh");
-                }
-                fcs[f] = int(beyondNone);
+                fcs[f] = beyond(beyondNone, mpm::WallType::noSlip);
                 ++counts[2];
                 continue;
             }
@@ -176,8 +188,7 @@ void conditionsBeyondMesh
             const mpm::WallType t = w.condition.type;
             // A slip or friction wall parallel to the face mirrors there as
             // on a box side (the image of the material's stress holds it)
-            w.shape->distance(xr, n, 8*L.h);
-            const bool parallel = mag(n[a]) > 1 - 1e-6;
+            const bool parallel = mag(nearestNormal[a]) > 1 - 1e-6;
             if
             (
                 t == mpm::WallType::noSlip || t == mpm::WallType::outlet
@@ -188,15 +199,7 @@ void conditionsBeyondMesh
                 ++counts[0];
                 continue;
             }
-            if (beyondFree < 0)
-            {
-                beyondFree = label(spec.conditions.size());
-                mpm::WallCondition free;
-                free.type = mpm::WallType::outlet;
-                spec.conditions.push_back(free);
-                names.append("beyondMesh");
-            }
-            fcs[f] = int(beyondFree);
+            fcs[f] = beyond(beyondFree, mpm::WallType::outlet);
             ++counts[1];
         }
     }
@@ -209,6 +212,19 @@ void conditionsBeyondMesh
 }
 
 } // namespace
+
+
+int Foam::latticeBoxSide(const mpm::Lattice& L, const point& x)
+{
+    const scalar tol = 1e-6*L.h;
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!L.solved[a]) continue;
+        if (mag(x[a] - L.origin[a]) < tol) return 2*a;
+        if (mag(x[a] - L.origin[a] - L.length(a)) < tol) return 2*a + 1;
+    }
+    return -1;
+}
 
 
 const Foam::wordList& Foam::inletKeywords()
@@ -248,7 +264,6 @@ mpm::BoundarySpec Foam::readWallConditions
     }
 
     Info<< "Walls:" << nl;
-    const scalar tol = 1e-6*L.h;
     // Condition index of each patch, faces or not. Decomposed, every rank
     // has the same patches (some empty here) before its processor patches,
     // so the indices agree and the ranks' faces can be combined below.
@@ -340,13 +355,7 @@ mpm::BoundarySpec Foam::readWallConditions
         forAll(pp, facei)
         {
             const point& fc = pp.faceCentres()[facei];
-            int side = -1;
-            for (int a = 0; a < 3 && side < 0; ++a)
-            {
-                if (!L.solved[a]) continue;
-                if (mag(fc[a] - L.origin[a]) < tol) side = 2*a;
-                else if (mag(fc[a] - L.origin[a] - L.length(a)) < tol) side = 2*a + 1;
-            }
+            const int side = latticeBoxSide(L, fc);
             if (side < 0 && ml.cellsAreNodes())
             {
                 FatalErrorInFunction
