@@ -22,6 +22,8 @@ struct LinearHat
 {
     static constexpr int width = 2;
     static constexpr Real radius = 1.0;
+    // The first node of the stencil at xi (eval's base), alone
+    MPM_HOST_DEVICE static inline Index baseOf(Real xi) { return static_cast<Index>(std::floor(xi)); }
     MPM_HOST_DEVICE static inline void eval(Real xi, Index& base, Real* w, Real* dw)
     {
         const Real fb = std::floor(xi);
@@ -37,6 +39,7 @@ struct QuadraticBSpline
 {
     static constexpr int width = 3;
     static constexpr Real radius = 1.5;
+    MPM_HOST_DEVICE static inline Index baseOf(Real xi) { return static_cast<Index>(std::floor(xi + 0.5) - 1.0); }
     MPM_HOST_DEVICE static inline void eval(Real xi, Index& base, Real* w, Real* dw)
     {
         const Real fb = std::floor(xi + 0.5) - 1.0;
@@ -53,6 +56,7 @@ struct CubicBSpline
 {
     static constexpr int width = 4;
     static constexpr Real radius = 2.0;
+    MPM_HOST_DEVICE static inline Index baseOf(Real xi) { return static_cast<Index>(std::floor(xi) - 1.0); }
     MPM_HOST_DEVICE static inline void eval(Real xi, Index& base, Real* w, Real* dw)
     {
         const Real fb = std::floor(xi) - 1.0;

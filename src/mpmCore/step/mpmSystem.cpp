@@ -16,6 +16,7 @@
 #include <cstring>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <type_traits>
 
 namespace mpm {
@@ -133,7 +134,7 @@ void MpmSystem::step(Real dt)
     ++stepCount_;
 }
 
-void MpmSystem::mapToGrid()
+void MpmSystem::mapToGrid(std::vector<Real>* grainVolume)
 {
     pullPoints();
     updateMassTolerance();
@@ -141,6 +142,7 @@ void MpmSystem::mapToGrid()
     {
         binPoints();
         scatter<decltype(k), decltype(d)::value>(true, false, false);
+        if (grainVolume) grainVolume->assign(grid_.volume.begin(), grid_.volume.end());
         sumHalo(foldMass | foldMomentum);
         foldGhosts(foldMass);
         decideWallContact(0, false);
@@ -194,23 +196,118 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
     }
 }
 
-void MpmSystem::spreadGrainVolume(const std::vector<double>& coverage, std::vector<Real>& out)
+void MpmSystem::setCoverage(const std::vector<double>& coverage)
 {
-    pullPoints();
-    out.assign(std::size_t(lattice_.nNodes), 0.0);
-    const std::vector<Real> invRho0 = inverseDensities();
-    const auto& P = particles_;
-    Real* o = out.data();
-    forEachPointStencil([&](Index p, auto&& nodes)
+    const Lattice& L = lattice_;
+    if (coverage.size() != std::size_t(L.nNodes))
     {
-        Real covered = 0;
-        nodes([&](Index I, Real N) { covered += N*coverage[I]; });
-        // A point inside the mesh has its own lattice cell partly
-        // covered, and a weight there
-        if (!(covered > 0)) return;
-        const Real v = P.mass[p]*invRho0[P.material[p]]/covered;
-        nodes([&](Index I, Real N) { o[I] += N*v; });
+        throw std::invalid_argument("setCoverage: one value per node of the lattice");
+    }
+    coverage_ = coverage;
+    int width = 0;
+    dispatch([&](auto k, auto) { width = decltype(k)::width; });
+    auto& full = coveredStencil_;
+    full.resize(coverage.size());
+    for (std::size_t I = 0; I < full.size(); ++I)
+    {
+        full[I] = std::abs(coverage[I] - 1) <= fullCoverage;
+    }
+    // Whether the W nodes from I on are all full, along each solved axis
+    // in turn: then the stencil whose first node is I is (a stencil past
+    // the padded lattice counts as uncovered)
+    std::vector<unsigned char> in;
+    for (int a = 0; a < 3; ++a)
+    {
+        if (!L.solved[a]) continue;
+        in = full;
+        const Index n = L.nodes[a], stride = L.stride[a];
+        for (Index I = 0; I < L.nNodes; ++I)
+        {
+            const Index i = (I/stride) % n;
+            unsigned char f = i + width <= n;
+            for (int o = 0; f && o < width; ++o) f = in[std::size_t(I + o*stride)];
+            full[std::size_t(I)] = f;
+        }
+    }
+}
+
+void MpmSystem::spreadGrainVolume(std::vector<Real>& spread) const
+{
+    if (coverage_.size() != std::size_t(lattice_.nNodes) || spread.size() != coverage_.size())
+    {
+        throw std::logic_error("spreadGrainVolume: needs setCoverage and mapToGrid(&spread) on this lattice");
+    }
+    if (!options_.constantGrainVolume)
+    {
+        throw std::logic_error("spreadGrainVolume: the grid volume is not the grain volume (setConstantGrainVolume)");
+    }
+    // The P2G's grain volume is the spread for every point whose stencil
+    // is fully covered: the others are corrected
+    dispatch([&](auto k, auto d)
+    {
+        spreadOverCoverage<decltype(k), decltype(d)::value>(spread);
     });
+}
+
+template<class K, int D>
+void MpmSystem::spreadOverCoverage(std::vector<Real>& spread) const
+{
+    const Lattice& L = lattice_;
+    const auto& P = particles_;
+    const std::vector<Real> invRho0 = inverseDensities();
+    Real* o = spread.data();
+    const double* cov = coverage_.data();
+    const Real invh = 1.0/L.h;
+    for (Index p = 0; p < P.size(); ++p)
+    {
+        // The first node of the point's stencil (Stencil::compute's base)
+        Index first = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+            if (!L.solved[a]) continue;
+            // The same expression as Stencil::compute's, so the same bits
+            const Index b = K::baseOf((P.x[a][p] - L.origin[a])*invh - 0.5 + L.pad);
+            first += std::min(std::max(b, Index(0)), Index(L.nodes[a] - 1))*L.stride[a];
+        }
+        if (coveredStencil_[std::size_t(first)]) continue;
+        Stencil<K, D> s;
+        s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
+        const Real v = P.mass[p]*invRho0[P.material[p]];
+        if constexpr (D == 3)
+        {
+            // By rows of W nodes along x, as the P2G's rows: short sums
+            // rather than one chain of W^3 dependent additions
+            constexpr int W = K::width;
+            const Index s1 = L.stride[L.axes[1]], s2 = L.stride[L.axes[2]];
+            const Index s0 = L.stride[L.axes[0]];
+            Real covered = 0;
+            for (int k = 0; k < W; ++k)
+            for (int j = 0; j < W; ++j)
+            {
+                const double* c = cov + (s.base[1] + j)*s1 + (s.base[2] + k)*s2 + s.base[0]*s0;
+                Real row = 0;
+                for (int i = 0; i < W; ++i) row += s.w[0][i]*c[i*s0];
+                covered += s.w[1][j]*s.w[2][k]*row;
+            }
+            // The P2G gave N v; the spread is N v/covered. A point with no
+            // covered node (outside the mesh) gives nothing.
+            const Real extra = covered > 0 ? v/covered - v : -v;
+            for (int k = 0; k < W; ++k)
+            for (int j = 0; j < W; ++j)
+            {
+                Real* r = o + (s.base[1] + j)*s1 + (s.base[2] + k)*s2 + s.base[0]*s0;
+                const Real e = s.w[1][j]*s.w[2][k]*extra;
+                for (int i = 0; i < W; ++i) r[i*s0] += s.w[0][i]*e;
+            }
+        }
+        else
+        {
+            Real covered = 0;
+            s.forEachWeight(L, [&](Index I, Real N) { covered += N*cov[I]; });
+            const Real extra = covered > 0 ? v/covered - v : -v;
+            s.forEachWeight(L, [&](Index I, Real N) { o[I] += N*extra; });
+        }
+    }
 }
 
 template<class K, int D>

@@ -208,8 +208,11 @@ public:
     Real stableDeltaT(Real courant) const;
 
     // Maps mass, volume and momentum to the grid at the current positions
-    // and sets grid().velocity; for output at any time.
-    void mapToGrid();
+    // and sets grid().velocity; for output at any time. With
+    // `grainVolume`, also a copy of the grid volume right after the P2G:
+    // this rank's points only, before any halo sum or ghost fold (for
+    // spreadGrainVolume).
+    void mapToGrid(std::vector<Real>* grainVolume = nullptr);
 
     // Decomposed runs, after mapToGrid(): the owners' summed mass and
     // volume sent to their halo copies too (a mesh sampling the lattice
@@ -232,11 +235,18 @@ public:
     // The grain volume (mass/rho0) of the points spread to the nodes with
     // the shape functions, each point's weights renormalised over its
     // stencil's coverage (per padded node, the share of its lattice cell
-    // inside the mesh, 0..1): sum_I out[I] coverage[I] is the points'
+    // inside the mesh, 0..1): sum_I spread[I] coverage[I] is the points'
     // grain volume exactly, so a mesh that covers only part of the lattice
     // receives all of it (meshLattice's own lattice, fluidCoupling). No
-    // ghost fold: ghosts lie outside the mesh (coverage 0).
-    void spreadGrainVolume(const std::vector<double>& coverage, std::vector<Real>& out);
+    // ghost fold: ghosts lie outside the mesh (coverage 0). The coverage
+    // does not change: set once. At every exchange, mapToGrid(&spread) and
+    // then spreadGrainVolume(spread), with the points unmoved between: a
+    // point whose stencil lies on fully covered nodes (|coverage - 1| <=
+    // fullCoverage) keeps its P2G grain volume; only the others pay for a
+    // second stencil.
+    void setCoverage(const std::vector<double>& coverage);
+    void spreadGrainVolume(std::vector<Real>& spread) const;
+    static constexpr double fullCoverage = 1e-12;
 
     // Number of points outside the domain (seeding checks), on this rank.
     Index countOutside() const;
@@ -285,7 +295,7 @@ private:
     // x = (M + diag)^-1 rhs, M lumped or consistent (Jacobi sweeps)
     template<class K, int D> void solveMass(const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x,
                                             const std::vector<Real>* diag = nullptr);
-    template<class Fn> void dispatch(Fn&& f);
+    template<class Fn> void dispatch(Fn&& f) const;
     // Whether a CPU loop over n items runs on several threads (openmp and
     // n >= parallelThreshold)
     bool worthThreads(Index n) const;
@@ -351,6 +361,11 @@ private:
     Particles particles_;
     std::vector<std::unique_ptr<ConstitutiveLaw>> materials_;
     GridState grid_;
+    // setCoverage: per node, the coverage, and whether every node of the
+    // stencil whose first node it is is fully covered
+    std::vector<double> coverage_;
+    std::vector<unsigned char> coveredStencil_;
+    template<class K, int D> void spreadOverCoverage(std::vector<Real>& spread) const;
     Binning binning_;
     ActiveRegion region_;
     mutable StepTimers timers_;

@@ -8,7 +8,7 @@
 namespace mpm {
 
 template<class Fn>
-void MpmSystem::dispatch(Fn&& f)
+void MpmSystem::dispatch(Fn&& f) const
 {
     dispatchShape(options_.shape, [&](auto k)
     {

@@ -93,6 +93,35 @@ struct Stencil
         }
     }
 
+    // Calls f(node, N) for every node of the stencil: the weights alone,
+    // in forEach's order (the grain-volume spread, no gradients)
+    template<class Fn>
+    MPM_HOST_DEVICE inline void forEachWeight(const Lattice& L, Fn&& f) const
+    {
+        const Index s0 = L.stride[L.axes[0]];
+        if constexpr (D == 1)
+        {
+            for (int i = 0; i < W; ++i) f((base[0] + i)*s0, w[0][i]);
+        }
+        else if constexpr (D == 2)
+        {
+            const Index s1 = L.stride[L.axes[1]];
+            for (int j = 0; j < W; ++j)
+            for (int i = 0; i < W; ++i) f((base[0] + i)*s0 + (base[1] + j)*s1, w[0][i]*w[1][j]);
+        }
+        else
+        {
+            const Index s1 = L.stride[L.axes[1]], s2 = L.stride[L.axes[2]];
+            for (int k = 0; k < W; ++k)
+            for (int j = 0; j < W; ++j)
+            {
+                const Real wjk = w[1][j]*w[2][k];
+                const Index nodeJK = (base[1] + j)*s1 + (base[2] + k)*s2;
+                for (int i = 0; i < W; ++i) f((base[0] + i)*s0 + nodeJK, w[0][i]*wjk);
+            }
+        }
+    }
+
     // Diagonal of the APIC inertia D_p = sum N (x_I - x_p)^2 per solved axis.
     MPM_HOST_DEVICE inline void apicInertia(const Lattice& L, Real Dinv[3]) const
     {

@@ -63,6 +63,16 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         coverage_.assign(local.begin(), local.end());
         mpm.system().sumToOwners({coverage_.data()});
         mpm.system().copyToHalo({coverage_.data()});
+        mpm.system().setCoverage(coverage_);
+        // Each node's sum of its overlaps' fractions (the mesh does not
+        // move): the denominators of the cells' averages onto the nodes
+        overlapWeight_.assign(coverage_.size(), 0.0);
+        forAll(mesh.cells(), celli)
+        {
+            mpm.lattice().forEachOverlap(celli, [&](label I, scalar T) { overlapWeight_[I] += T; });
+        }
+        mpm.system().sumToOwners({overlapWeight_.data()});
+        mpm.system().copyToHalo({overlapWeight_.data()});
     }
     if (!mpmDict.isDict("coupling"))
     {
@@ -74,6 +84,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     }
     const dictionary& d = mpmDict.subDict("coupling");
     Info<< "Fluid coupling:" << nl;
+    if (overlaps_ && !Pstream::parRun()) reportCoverage();
     mode_ = readChoice(d, "mode", parseMode, modeName, "oneWay twoWayMomentum twoWay", couplingMode::twoWay);
     // frozen: the scheme before the linearised response, unstable for
     // lifted beds (docs/stabilityAnalysis.md section 7b); an analysis aid
@@ -119,7 +130,42 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     checkKeywords(d, known, "coupling");
     if (!forceNames_.found("gravity")) Info<< "    no gravity (not in forces)" << nl;
     Info<< endl;
-    mpm_.system().mapToGrid();      // alpha.solid from the grain volumes
+    mapSolids();                    // alpha.solid from the grain volumes
+}
+
+void Foam::fluidCoupling::reportCoverage() const
+{
+    // The overlaps are exact: a lattice cell inside the mesh is covered
+    // to round-off, and its points keep their plain P2G grain volume
+    label full = 0, part = 0;
+    const mpm::Lattice& L = mpm_.system().lattice();
+    for (int k = 0; k < L.nCells[2]; ++k)
+    for (int j = 0; j < L.nCells[1]; ++j)
+    for (int i = 0; i < L.nCells[0]; ++i)
+    {
+        const scalar c = coverage_[std::size_t(L.realNode(i, j, k))];
+        if (mag(c - 1) <= mpm::MpmSystem::fullCoverage) ++full;
+        else if (c > 0) ++part;
+    }
+    Info<< "    lattice cells inside the mesh: " << full << " fully, "
+        << part << " partly (coverage within " << mpm::MpmSystem::fullCoverage
+        << " of 1: fully)" << nl;
+}
+
+void Foam::fluidCoupling::mapSolids()
+{
+    mpm::MpmSystem& s = mpm_.system();
+    {
+        mpm::ScopedTimer timer(p2gTime_);
+        s.mapToGrid(overlaps_ ? &nodeGrainVolume_ : nullptr);
+    }
+    mpm::ScopedTimer timer(mapsTime_);
+    if (overlaps_)
+    {
+        s.spreadGrainVolume(nodeGrainVolume_);
+        s.sumToOwners({nodeGrainVolume_.data()});
+        s.copyToHalo({nodeGrainVolume_.data()});
+    }
     updateFluidFraction();
 }
 
@@ -178,22 +224,20 @@ void Foam::fluidCoupling::cellsToNodes
     const vectorField& f, std::array<std::vector<mpm::Real>, 3>& out
 ) const
 {
-    std::vector<mpm::Real> weight(out[0].size(), 0.0);
     for (auto& a : out) std::fill(a.begin(), a.end(), 0.0);
     forAll(f, celli)
     {
         mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
         {
-            weight[I] += T;
             for (int k = 0; k < 3; ++k) out[k][I] += T*f[celli][k];
         });
     }
     // Decomposed: every rank's cells' share, then the average on every copy
     mpm::MpmSystem& s = mpm_.system();
-    s.sumToOwners({weight.data(), out[0].data(), out[1].data(), out[2].data()});
-    for (std::size_t I = 0; I < weight.size(); ++I)
+    s.sumToOwners({out[0].data(), out[1].data(), out[2].data()});
+    for (std::size_t I = 0; I < overlapWeight_.size(); ++I)
     {
-        if (weight[I] > 0) for (auto& a : out) a[I] /= weight[I];
+        if (overlapWeight_[I] > 0) for (auto& a : out) a[I] /= overlapWeight_[I];
     }
     s.copyToHalo({out[0].data(), out[1].data(), out[2].data()});
 }
@@ -205,7 +249,9 @@ Foam::List<Foam::Tuple2<Foam::word, Foam::scalar>> Foam::fluidCoupling::costs() 
     {
         c[i] = Tuple2<word, scalar>("force " + forceNames_[i], forceTime_[i]);
     }
-    c.last() = Tuple2<word, scalar>("coupling exchange", exchangeTime_);
+    c.last() = Tuple2<word, scalar>("coupling P2G", p2gTime_);
+    c.append(Tuple2<word, scalar>("coupling maps", mapsTime_));
+    c.append(Tuple2<word, scalar>("coupling solid flux", solidFluxTime_));
     return c;
 }
 
@@ -227,13 +273,6 @@ Foam::scalar Foam::fluidCoupling::alphaSolid(label celli) const
 
 void Foam::fluidCoupling::updateFluidFraction()
 {
-    if (overlaps_)
-    {
-        mpm::MpmSystem& s = mpm_.system();
-        s.spreadGrainVolume(coverage_, nodeGrainVolume_);
-        s.sumToOwners({nodeGrainVolume_.data()});
-        s.copyToHalo({nodeGrainVolume_.data()});
-    }
     const labelList& node = mpm_.lattice().cellNode();
     volScalarField& alphaF = fluid_.alpha();
     // primitiveFieldRef() keeps the previous fluid fraction as the old time
@@ -249,7 +288,8 @@ void Foam::fluidCoupling::updateFluidFraction()
         const scalar alphaS = alphaSolid(celli);
         if (alphaS > maxAlphaS) { maxAlphaS = alphaS; maxCell = celli; }
         if (alphaS > alphaMax_) { ++capped; capped_[celli] = true; }
-        aF[celli] = fluidFraction(celli);
+        // fluidFraction(celli), from the alpha.solid just computed
+        aF[celli] = volumeCoupled() ? 1 - min(alphaS, alphaMax_) : 1;
     }
     alphaF.correctBoundaryConditions();
     if (overlaps_ && mpm_.logThisStep())
@@ -315,33 +355,46 @@ void Foam::fluidCoupling::termsToLattice()
     {
         // K_I = sum_c T_cI K_c and K_I U_I = sum_c T_cI (K U)_c: the drag
         // the nodes receive is what the cells give, with the cells' solid
-        // velocity the same overlap average (solidVelocity); U and the
-        // force per solid volume F are overlap averages
-        std::fill(c.K.begin(), c.K.end(), 0.0);
-        std::array<std::vector<mpm::Real>, 3> KU;
-        for (auto& a : KU) a.assign(c.K.size(), 0.0);
+        // velocity the same overlap average (solidVelocity); the force per
+        // solid volume F is an overlap average. U enters the MPM only as
+        // K U, so it is zero where K is. One pass over the overlaps, one
+        // halo sum, one copy.
+        auto& a = nodeSums_;
+        for (auto& v : a) v.assign(c.K.size(), 0.0);
         forAll(node, celli)
         {
+            const scalar K = terms_.K[celli];
+            const vector& KU = terms_.KU[celli];
+            const vector& F = terms_.F[celli];
             mpm_.lattice().forEachOverlap(celli, [&](label I, scalar T)
             {
-                c.K[I] += T*terms_.K[celli];
-                for (int k = 0; k < 3; ++k) KU[k][I] += T*terms_.KU[celli][k];
+                a[0][I] += T*K;
+                for (int k = 0; k < 3; ++k)
+                {
+                    a[1 + k][I] += T*KU[k];
+                    a[4 + k][I] += T*F[k];
+                }
             });
         }
-        // Decomposed: every rank's cells' share, the sum on every copy
-        {
-            const std::vector<mpm::Real*> a{c.K.data(), KU[0].data(), KU[1].data(), KU[2].data()};
-            mpm_.system().sumToOwners(a);
-            mpm_.system().copyToHalo(a);
-        }
-        std::array<std::vector<mpm::Real>, 3> Uavg;
-        for (auto& a : Uavg) a.assign(c.K.size(), 0.0);
-        cellsToNodes(U.primitiveField(), Uavg);
-        cellsToNodes(terms_.F, c.F);
+        std::vector<mpm::Real*> all;
+        for (auto& v : a) all.push_back(v.data());
+        mpm::MpmSystem& s = mpm_.system();
+        s.sumToOwners(all);
         for (std::size_t I = 0; I < c.K.size(); ++I)
         {
-            for (int k = 0; k < 3; ++k) c.U[k][I] = c.K[I] > 0 ? KU[k][I]/c.K[I] : Uavg[k][I];
+            const scalar w = overlapWeight_[I], K = a[0][I];
+            c.K[I] = K;
+            for (int k = 0; k < 3; ++k)
+            {
+                c.U[k][I] = K > 0 ? a[1 + k][I]/K : 0;
+                c.F[k][I] = w > 0 ? a[4 + k][I]/w : 0;
+            }
         }
+        s.copyToHalo
+        ({
+            c.K.data(), c.U[0].data(), c.U[1].data(), c.U[2].data(),
+            c.F[0].data(), c.F[1].data(), c.F[2].data()
+        });
         return;
     }
     forAll(node, celli)
@@ -378,7 +431,7 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         forces_[i].addTo(terms_);
     }
     {
-        mpm::ScopedTimer timer(exchangeTime_);
+        mpm::ScopedTimer timer(mapsTime_);
         termsToLattice();
     }
 
@@ -398,10 +451,12 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
     for (label i = 0; i < n; ++i) mpm_.evolve(dt/n);
 
     // Hand the solid state to the fluid
+    mapSolids();
+    tmp<volVectorField> tUs;
     {
-        mpm::ScopedTimer timer(exchangeTime_);
-        s.mapToGrid();
-        updateFluidFraction();
+        mpm::ScopedTimer timer(mapsTime_);
+        tUs = tmp<volVectorField>::New(fluid_.Us());
+        volVectorField& Us = tUs.ref();
         const labelList& node = mpm_.lattice().cellNode();
         // A cell may overlap a halo copy that no point of this rank reached:
         // the owners' integrals, on every copy
@@ -409,7 +464,6 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         {
             s.copyToHalo({c.velocityIntegral[0].data(), c.velocityIntegral[1].data(), c.velocityIntegral[2].data()});
         }
-        volVectorField Us(fluid_.Us());
         forAll(node, celli)
         {
             if (overlaps_)
@@ -422,7 +476,10 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
             for (int k = 0; k < 3; ++k) Us[celli][k] = c.velocityIntegral[k][I]/c.time;
         }
         Us.correctBoundaryConditions();
-        fluid_.setSolid(Us, capped_);
+    }
+    {
+        mpm::ScopedTimer timer(solidFluxTime_);
+        fluid_.setSolid(tUs(), capped_);
     }
     forAll(forces_, i)
     {

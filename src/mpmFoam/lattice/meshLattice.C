@@ -476,36 +476,104 @@ bool Foam::meshLattice::ownsLatticeCell(label i, label j, label k) const
 namespace
 {
 
-// Adds the volume of tet (a, b, c, d), split into 8 by its edge midpoints
-// until its longest edge in the solved directions (`solved`: 1 or 0 per
-// axis) is below `size`, to the lattice cell of each leaf's centroid
-template<class Add>
-void sampleTet
+using tet = Foam::FixedList<Foam::point, 4>;
+
+Foam::scalar tetVolume(const tet& t)
+{
+    return Foam::mag(((t[1] - t[0]) ^ (t[2] - t[0])) & (t[3] - t[0]))/6;
+}
+
+// The convex prism of triangles (a0 a1 a2) and (b0 b1 b2), with edges
+// ai-bi, as three tets
+template<class Op>
+void prismTets
 (
-    const Foam::point& a, const Foam::point& b, const Foam::point& c, const Foam::point& d,
-    Foam::scalar size, int depth, const Foam::vector& solved, Add&& add
+    const Foam::point& a0, const Foam::point& a1, const Foam::point& a2,
+    const Foam::point& b0, const Foam::point& b1, const Foam::point& b2, Op& op
 )
 {
+    op(tet({a0, a1, a2, b2}));
+    op(tet({a0, a1, b1, b2}));
+    op(tet({a0, b0, b1, b2}));
+}
+
+// Cuts t by the plane x_a = X into convex pieces, each split into tets:
+// above(piece) for those with x_a >= X, below(piece) for x_a <= X. The
+// cut points lie on the plane exactly. (Written here rather than with
+// tetrahedron::sliceWithPlane, whose header does not compile on its own in
+// this OpenFOAM: tetPoints is used there before it is complete.)
+template<class Above, class Below>
+void sliceTet(const tet& t, int a, Foam::scalar X, Above& above, Below& below)
+{
     using namespace Foam;
-    auto len = [&](const vector& u) { return mag(cmptMultiply(u, solved)); };
-    const scalar longest = max(max(max(len(b - a), len(c - a)), max(len(d - a), len(c - b))),
-                               max(len(d - b), len(d - c)));
-    if (longest <= size || depth == 0)
+    int up[4], down[4], nUp = 0, nDown = 0;
+    for (int i = 0; i < 4; ++i)
     {
-        add(0.25*(a + b + c + d), mag(((b - a) ^ (c - a)) & (d - a))/6);
+        if (t[i][a] > X) up[nUp++] = i; else down[nDown++] = i;
+    }
+    if (nDown == 0) { above(t); return; }
+    if (nUp == 0) { below(t); return; }
+    // The point on edge (i, j) at the plane
+    auto cut = [&](int i, int j)
+    {
+        const scalar f = (t[i][a] - X)/(t[i][a] - t[j][a]);
+        point q(t[i] + f*(t[j] - t[i]));
+        q[a] = X;
+        return q;
+    };
+    if (nUp == 1 || nDown == 1)
+    {
+        // One corner alone on its side: a tet there, a prism on the other
+        const bool upAlone = nUp == 1;
+        const int c = upAlone ? up[0] : down[0];
+        const int* o = upAlone ? down : up;
+        const point q0(cut(c, o[0])), q1(cut(c, o[1])), q2(cut(c, o[2]));
+        const tet corner({t[c], q0, q1, q2});
+        if (upAlone)
+        {
+            above(corner);
+            prismTets(q0, q1, q2, t[o[0]], t[o[1]], t[o[2]], below);
+        }
+        else
+        {
+            below(corner);
+            prismTets(q0, q1, q2, t[o[0]], t[o[1]], t[o[2]], above);
+        }
         return;
     }
-    const point ab(0.5*(a + b)), ac(0.5*(a + c)), ad(0.5*(a + d));
-    const point bc(0.5*(b + c)), bd(0.5*(b + d)), cd(0.5*(c + d));
-    sampleTet(a, ab, ac, ad, size, depth - 1, solved, add);
-    sampleTet(ab, b, bc, bd, size, depth - 1, solved, add);
-    sampleTet(ac, bc, c, cd, size, depth - 1, solved, add);
-    sampleTet(ad, bd, cd, d, size, depth - 1, solved, add);
-    // The inner octahedron, around its diagonal ac-bd
-    sampleTet(ac, bd, ab, bc, size, depth - 1, solved, add);
-    sampleTet(ac, bd, bc, cd, size, depth - 1, solved, add);
-    sampleTet(ac, bd, cd, ad, size, depth - 1, solved, add);
-    sampleTet(ac, bd, ad, ab, size, depth - 1, solved, add);
+    // Two and two: a prism on each side
+    const int i = up[0], j = up[1], k = down[0], l = down[1];
+    const point qik(cut(i, k)), qil(cut(i, l)), qjk(cut(j, k)), qjl(cut(j, l));
+    prismTets(t[i], qik, qil, t[j], qjk, qjl, above);
+    prismTets(t[k], qik, qjk, t[l], qil, qjl, below);
+}
+
+// Adds the pieces of tet t, cut by the lattice's planes x_a = origin_a + k h
+// in each solved direction a from `axis` on, to the lattice cell of each
+// piece's centroid: the exact overlap volumes, to round-off. Pieces of
+// neighbouring cells share their faces' triangles, so a lattice cell inside
+// the mesh is covered exactly once. Planes are taken in increasing k from
+// kMin, so a piece is never cut twice by one plane.
+template<class Add>
+void clipTet(const tet& t, const mpm::Lattice& L, int axis, Foam::scalar kMin, Add& add)
+{
+    using namespace Foam;
+    for (int a = axis; a < 3; ++a, kMin = -GREAT)
+    {
+        if (!L.solved[a]) continue;
+        scalar lo = t[0][a], hi = lo;
+        for (int i = 1; i < 4; ++i) { lo = min(lo, t[i][a]); hi = max(hi, t[i][a]); }
+        scalar k = max(kMin, std::floor((lo - L.origin[a])/L.h) + 1);
+        scalar X = L.origin[a] + k*L.h;
+        if (X <= lo) { k += 1; X += L.h; }
+        if (!(X < hi)) continue;
+        // Below the plane: no more planes along a; above: the next ones
+        auto below = [&](const tet& p) { clipTet(p, L, a + 1, -GREAT, add); };
+        auto above = [&](const tet& p) { clipTet(p, L, a, k + 1, add); };
+        sliceTet(t, a, X, above, below);
+        return;
+    }
+    add(0.25*(t[0] + t[1] + t[2] + t[3]), tetVolume(t));
 }
 
 } // namespace
@@ -520,12 +588,6 @@ void Foam::meshLattice::buildExchangeWeights() const
     const mpm::Lattice& arrays = subdomain_ ? subdomain_->local() : lattice_;
     coverage_.assign(std::size_t(arrays.nNodes), 0.0);
     const pointField& pts = mesh_.points();
-    // Samples finer than half a lattice cell in the solved directions
-    const scalar size = 0.5*lattice_.h;
-    const vector solved
-    (
-        lattice_.solved[0] ? 1 : 0, lattice_.solved[1] ? 1 : 0, lattice_.solved[2] ? 1 : 0
-    );
     std::map<label, scalar> overlap;
     for (label celli = 0; celli < nCells; ++celli)
     {
@@ -561,12 +623,13 @@ void Foam::meshLattice::buildExchangeWeights() const
             const face& f = mesh_.faces()[facei];
             for (label i = 1; i + 1 < f.size(); ++i)
             {
-                sampleTet(cc, pts[f[0]], pts[f[i]], pts[f[i + 1]], size, 6, solved, add);
+                clipTet(tet({cc, pts[f[0]], pts[f[i]], pts[f[i + 1]]}), lattice_, 0, -GREAT, add);
             }
         }
-        // Fractions of the mesh's cell volume: with a curved face they sum
-        // to the sampled volume's share, a hair off 1; what moves between
-        // the two sides is conserved either way (the same weights)
+        // Fractions of the mesh's cell volume: with a warped face they sum
+        // to a hair off 1 (OpenFOAM decomposes about the face centre); what
+        // moves between the two sides is conserved either way (the same
+        // weights)
         const scalar V = mesh_.cellVolumes()[celli];
         weightStart_[celli] = nodes.size();
         for (const auto& o : overlap)
@@ -580,7 +643,7 @@ void Foam::meshLattice::buildExchangeWeights() const
     weightNode_.transfer(nodes);
     weightFraction_.transfer(fractions);
     Info<< "MPM lattice <-> mesh exchange: " << weightNode_.size() << " overlaps of "
-        << nCells << " cells with lattice cells (tets refined below h/2)" << nl;
+        << nCells << " cells with lattice cells (cut exactly by the lattice's planes)" << nl;
 }
 
 Foam::label Foam::meshLattice::fvCellOf(const point& x) const
