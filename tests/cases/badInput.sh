@@ -58,7 +58,12 @@ expectFailure "unknown wall type" "Valid type choices: noSlip slip friction peri
 
 c=$(freshCopy frictionWithoutCoefficient)
 sed -i 's/fixedEnd { type noSlip; }/fixedEnd { type friction; }/' "$(props "$c")"
-expectFailure "friction wall without coefficient" "Missing keyword frictionCoefficient" runIn "$c" mpmFoam
+expectFailure "friction wall without coefficient" "Missing keyword frictionCoefficient for the friction wall fixedEnd" runIn "$c" mpmFoam
+
+# A friction coefficient on a wall of another type would be ignored
+c=$(freshCopy coefficientOnSlipWall)
+sed -i 's/fixedEnd { type noSlip; }/fixedEnd { type slip; frictionCoefficient 0.3; }/' "$(props "$c")"
+expectFailure "friction coefficient on a slip wall" "The wall fixedEnd is slip: frictionCoefficient needs type friction" runIn "$c" mpmFoam
 
 # Strict dictionaries: an unknown keyword (here a misspelling) is an error
 # naming the file, the keyword and the closest valid one, never ignored.

@@ -7,7 +7,8 @@
 #      an extent that cuts 2 cells off its x+ and y+ sides (h = 0.05, the
 #      disks never come within 2 cells of the cut): the lattice is its own,
 #      smaller, and the positions equal the full box's at every written time
-#      (1e-12 m; the same lattice cells, the same points).
+#      (1e-12 m; the same lattice cells, the same points). The same on 2
+#      ranks (simple, split across x) equals the serial run (1e-10 m).
 #   2. One disk thrown at 0.5 m/s against the extent's x+ side at 0.6
 #      (extentWall slip), against the same disk in a box mesh that ends at
 #      0.6 with a slip wall there: positions equal at every written time
@@ -15,7 +16,8 @@
 #      beyond 0.6; the cells beyond the extent have alpha.solid 0.
 #   3. An inlet partly beyond the extent: the rate kept, nothing beyond.
 #   4. Bad input: an extent outside the mesh, extentWall without extent,
-#      an inlet extentWall, a seeding region beyond the extent.
+#      an inlet extentWall, a friction extentWall without its coefficient,
+#      a seeding region beyond the extent.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -33,6 +35,20 @@ check "extent: the lattice is its own, 26 x 26 cells (the box's 28 less 2 each w
 read -r d n <<< "$(samePositions "$u" "$e")"
 check "extent the material never reaches: positions equal the full box's at $n written times (max difference $d)" \
     "d <= 1e-12 and n >= 4" d="$d" n="$n"
+
+# 1b. The same extent on 2 ranks, split across x (simple): the lattice's
+#     owners follow the mesh's cells, and the cut sides are the lattice's.
+#     Positions equal the serial extent run's at every written time.
+ep=$(copyTutorial mpm/elasticDisks extentPar)
+cp "$e/system/controlDict" "$ep/system/"
+cp "$(props "$e")" "$(props "$ep")"
+runApps "$ep" blockMesh mpmSetParticles || { echo "FAIL: extentPar setup"; failures=$((failures + 1)); }
+decomposeCase "$ep" 2 simple 'n (2 1 1);'
+(cd "$ep" && mpirun -np 2 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1) \
+    || { echo "FAIL: extent on 2 ranks"; tail -30 "$ep/log.mpmFoam"; failures=$((failures + 1)); }
+read -r d n <<< "$(samePositions "$e" "$ep")"
+check "extent on 2 ranks: positions equal the serial extent run's at $n written times (max difference $d)" \
+    "d <= 1e-10 and n >= 4" d="$d" n="$n"
 
 # 2. A disk thrown at the extent's side, against a mesh that ends there
 oneDisk()
@@ -113,7 +129,9 @@ expectFailure "an extent outside the mesh" "lattice extent .* does not overlap t
 v=$(bad noExtent); sed -i 's/^lattice .*/lattice { extentWall { type slip; } }/' "$(props "$v")"
 expectFailure "extentWall without extent" "extentWall without extent" runIn "$v" mpmFoam
 v=$(bad inletWall); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); extentWall { type inlet; } }/' "$(props "$v")"
-expectFailure "an inlet as the extent's wall" "extentWall type inlet is not a wall of the lattice's extent \(valid: noSlip slip friction outlet\)" runIn "$v" mpmFoam
+expectFailure "an inlet as the extent's wall" "Valid type choices: noSlip slip friction outlet" runIn "$v" mpmFoam
+v=$(bad frictionNoMu); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); extentWall { type friction; } }/' "$(props "$v")"
+expectFailure "a friction extentWall without its coefficient" "Missing keyword frictionCoefficient for the friction extentWall" runIn "$v" mpmFoam
 v=$(bad region); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (0.9 1.1 2)); }/' "$(props "$v")"
 expectFailure "a seeding region beyond the extent" "enlarge the mesh \(or the MPM lattice's extent" runIn "$v" mpmSetParticles
 

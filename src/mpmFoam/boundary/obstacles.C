@@ -2,6 +2,7 @@
 #include "choice.H"
 #include "knownKeywords.H"
 #include "surfaceWallShape.H"
+#include "wallConditions.H"
 #include <memory>
 
 namespace
@@ -98,36 +99,7 @@ std::vector<mpm::LevelSetWall> Foam::readObstacles
 
         mpm::LevelSetWall w;
         w.name = name;
-        w.condition.type = readChoice
-        (
-            d, "type",
-            [](const std::string& s, mpm::WallType& t)
-            {
-                return mpm::parseWallType(s, t)
-                    && (t == mpm::WallType::noSlip || t == mpm::WallType::slip
-                     || t == mpm::WallType::friction);
-            },
-            [](mpm::WallType t) { return mpm::wallTypeName(t); },
-            "noSlip slip friction", mpm::WallType::noSlip, log
-        );
-        if (w.condition.type == mpm::WallType::friction)
-        {
-            if (!d.found("frictionCoefficient"))
-            {
-                FatalIOErrorInFunction(d)
-                    << "Missing keyword frictionCoefficient for the friction "
-                    << "obstacle " << name << " (Coulomb coefficient, >= 0)"
-                    << exit(FatalIOError);
-            }
-            w.condition.frictionCoefficient = readBounded(d, "frictionCoefficient", 0, 0, GREAT, log);
-        }
-        else if (d.found("frictionCoefficient"))
-        {
-            FatalIOErrorInFunction(d)
-                << "Obstacle " << name << " is " << mpm::wallTypeName(w.condition.type)
-                << ": frictionCoefficient needs type friction"
-                << exit(FatalIOError);
-        }
+        w.condition = readWallCondition(d, "obstacle " + std::string(name), "noSlip slip friction", log);
 
         try
         {

@@ -7,6 +7,7 @@
 #include "processorCyclicPolyPatch.H"
 #include "processorPolyPatch.H"
 #include "surfaceWallShape.H"
+#include <sstream>
 
 namespace
 {
@@ -214,6 +215,46 @@ void conditionsBeyondMesh
 } // namespace
 
 
+mpm::WallCondition Foam::readWallCondition
+(
+    const dictionary& d, const std::string& what, const char* valid, bool echo
+)
+{
+    mpm::WallCondition wc;
+    wc.type = readChoice
+    (
+        d, "type",
+        [&](const std::string& s, mpm::WallType& t)
+        {
+            std::istringstream names(valid);
+            std::string v;
+            while (names >> v) if (v == s) return mpm::parseWallType(s, t);
+            return false;
+        },
+        [](mpm::WallType t) { return mpm::wallTypeName(t); },
+        valid, mpm::WallType::noSlip, echo
+    );
+    if (wc.type == mpm::WallType::friction)
+    {
+        if (!d.found("frictionCoefficient"))
+        {
+            FatalIOErrorInFunction(d)
+                << "Missing keyword frictionCoefficient for the friction "
+                << what.c_str() << " (Coulomb coefficient, >= 0)"
+                << exit(FatalIOError);
+        }
+        wc.frictionCoefficient = readBounded(d, "frictionCoefficient", 0, 0, GREAT, echo);
+    }
+    else if (d.found("frictionCoefficient"))
+    {
+        FatalIOErrorInFunction(d)
+            << "The " << what.c_str() << " is " << mpm::wallTypeName(wc.type)
+            << ": frictionCoefficient needs type friction"
+            << exit(FatalIOError);
+    }
+    return wc;
+}
+
 int Foam::latticeBoxSide(const mpm::Lattice& L, const point& x)
 {
     const scalar tol = 1e-6*L.h;
@@ -289,31 +330,13 @@ mpm::BoundarySpec Foam::readWallConditions
             {
                 const dictionary& d = e->dict();
                 Info<< "    " << pp.name() << nl;
-                wc.type = readChoice
-                (
-                    d, "type", mpm::parseWallType,
-                    [](mpm::WallType t) { return mpm::wallTypeName(t); },
-                    mpm::validWallTypeNames(), mpm::WallType::noSlip
-                );
+                wc = readWallCondition(d, "wall " + pp.name(), mpm::validWallTypeNames());
                 if (wc.type == mpm::WallType::periodic)
                 {
                     FatalIOErrorInFunction(d)
                         << "Patch " << pp.name() << " is not cyclic: a periodic "
                         << "wall needs a cyclic patch pair in blockMeshDict"
                         << exit(FatalIOError);
-                }
-                if (wc.type == mpm::WallType::friction)
-                {
-                    if (!d.found("frictionCoefficient"))
-                    {
-                        FatalIOErrorInFunction(d)
-                            << "Missing keyword frictionCoefficient for the "
-                            << "friction wall " << pp.name()
-                            << " (Coulomb coefficient, >= 0)"
-                            << exit(FatalIOError);
-                    }
-                    wc.frictionCoefficient =
-                        readBounded(d, "frictionCoefficient", 0, 0, GREAT);
                 }
                 if (wc.type == mpm::WallType::inlet)
                 {

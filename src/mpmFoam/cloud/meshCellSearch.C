@@ -133,23 +133,28 @@ Foam::label Foam::toMeshCellRanks(const fvMesh& mesh, mpm::Particles& P)
 void Foam::toLatticeOwners(const meshLattice& lattice, mpm::Particles& P)
 {
     if (!Pstream::parRun()) return;
-    // Owner of every lattice cell: each rank marks its own cells
     const mpm::Lattice& L = lattice.lattice();
-    const label nCells = label(L.nCells[0])*L.nCells[1]*L.nCells[2];
-    labelList owner(nCells, -1);
-    for (const auto& r : lattice.ownedLatticeCells())
+    // A lattice of its own holds its owners' table; a uniform box's
+    // lattice cells are its ranks' mesh cells: each rank marks its own
+    labelList boxOwner;
+    if (lattice.cellsAreNodes())
     {
-        owner[L.cellIndex(r[0], r[1], r[2])] = Pstream::myProcNo();
+        boxOwner.setSize(label(L.nCells[0])*L.nCells[1]*L.nCells[2], -1);
+        for (const auto& r : lattice.ownedLatticeCells())
+        {
+            boxOwner[L.cellIndex(r[0], r[1], r[2])] = Pstream::myProcNo();
+        }
+        Pstream::listCombineGather(boxOwner, maxEqOp<label>());
+        Pstream::listCombineScatter(boxOwner);
     }
-    Pstream::listCombineGather(owner, maxEqOp<label>());
-    Pstream::listCombineScatter(owner);
     labelList dest(P.size());
     forAll(dest, p)
     {
         const point x(P.x[0][p], P.x[1][p], P.x[2][p]);
         label ijk[3];
         lattice.indicesOf(x, ijk);
-        dest[p] = owner[L.cellIndex(ijk[0], ijk[1], ijk[2])];
+        const label lin(L.cellIndex(ijk[0], ijk[1], ijk[2]));
+        dest[p] = lattice.cellsAreNodes() ? boxOwner[lin] : lattice.latticeCellOwner(lin);
         if (dest[p] < 0)
         {
             FatalErrorInFunction

@@ -5,6 +5,7 @@
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "choice.H"
+#include "wallConditions.H"
 #include "knownKeywords.H"
 #include "OStringStream.H"
 #include <map>
@@ -187,29 +188,7 @@ void Foam::meshLattice::readExtent(const dictionary& ld)
     {
         const dictionary& w = ld.subDict("extentWall");
         checkKeywords(w, {"type", "frictionCoefficient"}, "extentWall");
-        extentWall_.type = readChoice
-        (
-            w, "type", mpm::parseWallType,
-            [](mpm::WallType t) { return mpm::wallTypeName(t); },
-            "noSlip slip friction outlet", mpm::WallType::noSlip, false
-        );
-        if (extentWall_.type == mpm::WallType::periodic || extentWall_.type == mpm::WallType::inlet)
-        {
-            FatalIOErrorInFunction(w)
-                << "extentWall type " << mpm::wallTypeName(extentWall_.type)
-                << " is not a wall of the lattice's extent (valid: noSlip slip"
-                << " friction outlet)" << exit(FatalIOError);
-        }
-        if (extentWall_.type == mpm::WallType::friction)
-        {
-            extentWall_.frictionCoefficient = readBounded(w, "frictionCoefficient", 0, 0, GREAT);
-        }
-        else if (w.found("frictionCoefficient"))
-        {
-            FatalIOErrorInFunction(w)
-                << "frictionCoefficient is for an extentWall of type friction"
-                << exit(FatalIOError);
-        }
+        extentWall_ = readWallCondition(w, "extentWall", "noSlip slip friction outlet", false);
     }
 }
 
