@@ -8,7 +8,9 @@
 #      disks never come within 2 cells of the cut): the lattice is its own,
 #      smaller, and the positions equal the full box's at every written time
 #      (1e-12 m; the same lattice cells, the same points). The same on 2
-#      ranks (simple, split across x) equals the serial run (1e-10 m).
+#      ranks (simple, split across x) equals the serial run (1e-10 m), and
+#      on 3 ranks (manual) with one rank holding only cells beyond the
+#      extent, so owning no lattice cell.
 #   2. One disk thrown at 0.5 m/s against the extent's x+ side at 0.6
 #      (extentWall slip), against the same disk in a box mesh that ends at
 #      0.6 with a slip wall there: positions equal at every written time
@@ -48,6 +50,32 @@ decomposeCase "$ep" 2 simple 'n (2 1 1);'
     || { echo "FAIL: extent on 2 ranks"; tail -30 "$ep/log.mpmFoam"; failures=$((failures + 1)); }
 read -r d n <<< "$(samePositions "$e" "$ep")"
 check "extent on 2 ranks: positions equal the serial extent run's at $n written times (max difference $d)" \
+    "d <= 1e-10 and n >= 4" d="$d" n="$n"
+
+# 1c. On 3 ranks (manual): processor 2 holds only the cells beyond the
+#     extent (x > 1.1) and owns no lattice cell; the middle one has two
+#     processor patches, the others one (the patches every rank has come
+#     first: the walls off the lattice's sides are counted over those).
+#     Positions equal the serial extent run's.
+e3=$(copyTutorial mpm/elasticDisks extentThreeRanks)
+cp "$e/system/controlDict" "$e3/system/"
+cp "$(props "$e")" "$(props "$e3")"
+runApps "$e3" blockMesh mpmSetParticles || { echo "FAIL: extentThreeRanks setup"; failures=$((failures + 1)); }
+"$PY" - "$e3/constant/cellDecomposition" <<'PYEOF'
+import sys
+# 28 x 28 cells of 0.05 m from -0.2, x fastest: columns 26, 27 lie beyond 1.1
+cells = [2 if i >= 26 else (0 if i < 13 else 1) for j in range(28) for i in range(28)]
+open(sys.argv[1], "w").write(
+    "FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }\n"
+    + "%d\n(\n%s\n)\n" % (len(cells), "\n".join(map(str, cells))))
+PYEOF
+decomposeCase "$e3" 3 manual 'dataFile "cellDecomposition";'
+(cd "$e3" && mpirun -np 3 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1) \
+    || { echo "FAIL: extent on 3 ranks"; tail -30 "$e3/log.mpmFoam"; failures=$((failures + 1)); }
+grep -q "processor 2 owns no lattice cell" "$e3/log.mpmFoam"
+check "extent on 3 ranks: the log says processor 2 owns no lattice cell" "r == 0" r=$?
+read -r d n <<< "$(samePositions "$e" "$e3")"
+check "extent on 3 ranks, one with no lattice cell: positions equal the serial extent run's at $n written times (max difference $d)" \
     "d <= 1e-10 and n >= 4" d="$d" n="$n"
 
 # 2. A disk thrown at the extent's side, against a mesh that ends there

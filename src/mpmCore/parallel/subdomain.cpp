@@ -97,18 +97,19 @@ void Subdomain::build
     periodic_ = periodic;
     const int me = comm.rank(), np = comm.size();
     const int pad = global.pad;
-    if (owned.empty())
-    {
-        throw std::invalid_argument("subdomain: processor " + std::to_string(me) + " owns no cells");
-    }
-
-    // Bounding box of the owned cells, then the box lattice around it.
+    // Bounding box of the owned cells, then the box lattice around it. A
+    // rank that owns no cell (its mesh cells all beyond the lattice's
+    // extent, say) keeps a box around cell (0 0 0) that it owns nothing of
+    // and no stencil of it reaches: no halo, no points; it still takes part
+    // in every exchange. The others see its box as empty.
     std::array<int, 3> lo{{std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), std::numeric_limits<int>::max()}};
     std::array<int, 3> hi{{-1, -1, -1}};
     for (const auto& c : owned)
     {
         for (int a = 0; a < 3; ++a) { lo[a] = std::min(lo[a], c[a]); hi[a] = std::max(hi[a], c[a]); }
     }
+    const std::vector<std::int64_t> myBox{lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
+    if (owned.empty()) lo = hi = {0, 0, 0};
     local_ = global;
     local_.checkGhostLayers = false;
     for (int a = 0; a < 3; ++a)
@@ -165,7 +166,7 @@ void Subdomain::build
     for (const auto& c : owned) boxOwner_[localNode(c[0], c[1], c[2])] = me;
     owner_.clear();
 
-    std::vector<std::int64_t> myBox{lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]}, boxes;
+    std::vector<std::int64_t> boxes;
     comm.allGather(myBox, boxes);
 
     std::vector<Index> needed;

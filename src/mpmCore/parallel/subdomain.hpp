@@ -31,7 +31,8 @@ class Subdomain
 {
 public:
     // global: the whole box (finalised); owned: global real (i, j, k) of the
-    // cells this rank owns (non-empty); periodic: per axis.
+    // cells this rank owns (may be empty: then no halo and no points, see
+    // build); periodic: per axis.
     void build
     (
         const Lattice& global,

@@ -76,9 +76,13 @@ void readPatchWalls
     std::vector<mpm::LevelSetWall>& walls
 )
 {
-    // Decomposed: any rank's faces count (their surfaces are gathered)
-    labelList count(offBox.size());
-    forAll(offBox, patchi) count[patchi] = offBox[patchi].size();
+    // Decomposed: any rank's faces count (their surfaces are gathered).
+    // The patches every rank has, in the same order: the processor patches
+    // come after them, as many as the rank has neighbours (periodic
+    // patches lie on the lattice's sides, so no processorCyclic face is
+    // off it)
+    labelList count(mesh.boundaryMesh().nNonProcessor());
+    forAll(count, patchi) count[patchi] = offBox[patchi].size();
     Pstream::listCombineGather(count, plusEqOp<label>());
     Pstream::listCombineScatter(count);
     if (sum(count) == 0) return;
@@ -93,7 +97,7 @@ void readPatchWalls
     }
     const auto sign = std::make_shared<closedSurface>(triangulate(mesh, all));
     Info<< "Walls off the lattice box's sides (level sets, docs/geometry.md):" << nl;
-    forAll(offBox, patchi)
+    forAll(count, patchi)
     {
         if (count[patchi] == 0) continue;
         mpm::LevelSetWall w;

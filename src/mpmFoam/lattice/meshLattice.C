@@ -381,12 +381,16 @@ void Foam::meshLattice::decomposeOwn()
     for (const label o : latticeOwner_) ++count[o];
     Info<< "MPM lattice decomposition: lattice cells per processor " << count
         << " (each owns the cells whose centres its mesh cells hold)" << nl;
-    if (min(count) == 0)
+    // A processor may own none (its mesh cells all beyond the lattice's
+    // extent): it does no MPM work. Its cells must then overlap no lattice
+    // cell, which the exchange's weights check (buildExchangeWeights).
+    forAll(count, proc)
     {
-        FatalErrorInFunction
-            << "Processor " << findMin(count) << " owns no lattice cell (its"
-            << " mesh cells hold no lattice cell centre): decompose for fewer"
-            << " processors or choose a smaller lattice spacing" << exit(FatalError);
+        if (count[proc] == 0)
+        {
+            Info<< "    processor " << proc << " owns no lattice cell (its mesh"
+                << " cells hold no lattice cell centre): no MPM work there" << nl;
+        }
     }
 }
 
