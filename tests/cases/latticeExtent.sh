@@ -38,16 +38,23 @@ read -r d n <<< "$(samePositions "$u" "$e")"
 check "extent the material never reaches: positions equal the full box's at $n written times (max difference $d)" \
     "d <= 1e-12 and n >= 4" d="$d" n="$n"
 
+# onRanks <case> <n> <method> [coeffs]: the serial extent run's settings,
+# seeded serially, decomposed (decomposeCase), run and reconstructed
+onRanks()
+{
+    cp "$e/system/controlDict" "$1/system/"
+    cp "$(props "$e")" "$(props "$1")"
+    runApps "$1" blockMesh mpmSetParticles || { echo "FAIL: $1 setup"; failures=$((failures + 1)); }
+    decomposeCase "$1" "$2" "$3" "${4:-}"
+    (cd "$1" && mpirun -np "$2" --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1) \
+        || { echo "FAIL: extent on $2 ranks"; tail -30 "$1/log.mpmFoam"; failures=$((failures + 1)); }
+}
+
 # 1b. The same extent on 2 ranks, split across x (simple): the lattice's
 #     owners follow the mesh's cells, and the cut sides are the lattice's.
 #     Positions equal the serial extent run's at every written time.
 ep=$(copyTutorial mpm/elasticDisks extentPar)
-cp "$e/system/controlDict" "$ep/system/"
-cp "$(props "$e")" "$(props "$ep")"
-runApps "$ep" blockMesh mpmSetParticles || { echo "FAIL: extentPar setup"; failures=$((failures + 1)); }
-decomposeCase "$ep" 2 simple 'n (2 1 1);'
-(cd "$ep" && mpirun -np 2 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1) \
-    || { echo "FAIL: extent on 2 ranks"; tail -30 "$ep/log.mpmFoam"; failures=$((failures + 1)); }
+onRanks "$ep" 2 simple 'n (2 1 1);'
 read -r d n <<< "$(samePositions "$e" "$ep")"
 check "extent on 2 ranks: positions equal the serial extent run's at $n written times (max difference $d)" \
     "d <= 1e-10 and n >= 4" d="$d" n="$n"
@@ -58,9 +65,6 @@ check "extent on 2 ranks: positions equal the serial extent run's at $n written 
 #     first: the walls off the lattice's sides are counted over those).
 #     Positions equal the serial extent run's.
 e3=$(copyTutorial mpm/elasticDisks extentThreeRanks)
-cp "$e/system/controlDict" "$e3/system/"
-cp "$(props "$e")" "$(props "$e3")"
-runApps "$e3" blockMesh mpmSetParticles || { echo "FAIL: extentThreeRanks setup"; failures=$((failures + 1)); }
 "$PY" - "$e3/constant/cellDecomposition" <<'PYEOF'
 import sys
 # 28 x 28 cells of 0.05 m from -0.2, x fastest: columns 26, 27 lie beyond 1.1
@@ -69,9 +73,7 @@ open(sys.argv[1], "w").write(
     "FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }\n"
     + "%d\n(\n%s\n)\n" % (len(cells), "\n".join(map(str, cells))))
 PYEOF
-decomposeCase "$e3" 3 manual 'dataFile "cellDecomposition";'
-(cd "$e3" && mpirun -np 3 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1) \
-    || { echo "FAIL: extent on 3 ranks"; tail -30 "$e3/log.mpmFoam"; failures=$((failures + 1)); }
+onRanks "$e3" 3 manual 'dataFile "cellDecomposition";'
 grep -q "processor 2 owns no lattice cell" "$e3/log.mpmFoam"
 check "extent on 3 ranks: the log says processor 2 owns no lattice cell" "r == 0" r=$?
 read -r d n <<< "$(samePositions "$e" "$e3")"
