@@ -170,7 +170,7 @@ void MpmSystem::forEachPointStencil(Fn&& fn)
             s.compute(lattice_, P.x[0][p], P.x[1][p], P.x[2][p]);
             fn(p, [&](auto&& visit)
             {
-                s.forEach(lattice_, [&](Index I, Real N, const Real*, const Real*) { visit(I, N); });
+                s.forEachWeight(lattice_, [&](Index I, Real N) { visit(I, N); });
             });
         });
     });
@@ -273,40 +273,24 @@ void MpmSystem::spreadOverCoverage(std::vector<Real>& spread) const
         Stencil<K, D> s;
         s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
         const Real v = P.mass[p]*invRho0[P.material[p]];
-        if constexpr (D == 3)
+        // By rows of W nodes, as the P2G's rows: short sums rather than
+        // one chain of W^D dependent additions
+        const Index s0 = L.stride[L.axes[0]];
+        Real covered = 0;
+        s.forEachRow(L, [&](Index first, Real wjk)
         {
-            // By rows of W nodes along x, as the P2G's rows: short sums
-            // rather than one chain of W^3 dependent additions
-            constexpr int W = K::width;
-            const Index s1 = L.stride[L.axes[1]], s2 = L.stride[L.axes[2]];
-            const Index s0 = L.stride[L.axes[0]];
-            Real covered = 0;
-            for (int k = 0; k < W; ++k)
-            for (int j = 0; j < W; ++j)
-            {
-                const double* c = cov + (s.base[1] + j)*s1 + (s.base[2] + k)*s2 + s.base[0]*s0;
-                Real row = 0;
-                for (int i = 0; i < W; ++i) row += s.w[0][i]*c[i*s0];
-                covered += s.w[1][j]*s.w[2][k]*row;
-            }
-            // The P2G gave N v; the spread is N v/covered. A point with no
-            // covered node (outside the mesh) gives nothing.
-            const Real extra = covered > 0 ? v/covered - v : -v;
-            for (int k = 0; k < W; ++k)
-            for (int j = 0; j < W; ++j)
-            {
-                Real* r = o + (s.base[1] + j)*s1 + (s.base[2] + k)*s2 + s.base[0]*s0;
-                const Real e = s.w[1][j]*s.w[2][k]*extra;
-                for (int i = 0; i < W; ++i) r[i*s0] += s.w[0][i]*e;
-            }
-        }
-        else
+            Real row = 0;
+            for (int i = 0; i < K::width; ++i) row += s.w[0][i]*cov[first + i*s0];
+            covered += wjk*row;
+        });
+        // The P2G gave N v; the spread is N v/covered. A point with no
+        // covered node (outside the mesh) gives nothing.
+        const Real extra = covered > 0 ? v/covered - v : -v;
+        s.forEachRow(L, [&](Index first, Real wjk)
         {
-            Real covered = 0;
-            s.forEachWeight(L, [&](Index I, Real N) { covered += N*cov[I]; });
-            const Real extra = covered > 0 ? v/covered - v : -v;
-            s.forEachWeight(L, [&](Index I, Real N) { o[I] += N*extra; });
-        }
+            const Real e = wjk*extra;
+            for (int i = 0; i < K::width; ++i) o[first + i*s0] += s.w[0][i]*e;
+        });
     }
 }
 

@@ -93,21 +93,22 @@ struct Stencil
         }
     }
 
-    // Calls f(node, N) for every node of the stencil: the weights alone,
-    // in forEach's order (the grain-volume spread, no gradients)
+    // Calls f(first, wjk) for every row of W nodes along the first solved
+    // axis: its first node (the others follow at stride[axes[0]]) and the
+    // product of the other axes' weights (1 in 1D); the row's node i has
+    // weight w[0][i]*wjk, as in forEach
     template<class Fn>
-    MPM_HOST_DEVICE inline void forEachWeight(const Lattice& L, Fn&& f) const
+    MPM_HOST_DEVICE inline void forEachRow(const Lattice& L, Fn&& f) const
     {
         const Index s0 = L.stride[L.axes[0]];
         if constexpr (D == 1)
         {
-            for (int i = 0; i < W; ++i) f((base[0] + i)*s0, w[0][i]);
+            f(base[0]*s0, Real(1));
         }
         else if constexpr (D == 2)
         {
             const Index s1 = L.stride[L.axes[1]];
-            for (int j = 0; j < W; ++j)
-            for (int i = 0; i < W; ++i) f((base[0] + i)*s0 + (base[1] + j)*s1, w[0][i]*w[1][j]);
+            for (int j = 0; j < W; ++j) f(base[0]*s0 + (base[1] + j)*s1, w[1][j]);
         }
         else
         {
@@ -115,11 +116,21 @@ struct Stencil
             for (int k = 0; k < W; ++k)
             for (int j = 0; j < W; ++j)
             {
-                const Real wjk = w[1][j]*w[2][k];
-                const Index nodeJK = (base[1] + j)*s1 + (base[2] + k)*s2;
-                for (int i = 0; i < W; ++i) f((base[0] + i)*s0 + nodeJK, w[0][i]*wjk);
+                f(base[0]*s0 + (base[1] + j)*s1 + (base[2] + k)*s2, w[1][j]*w[2][k]);
             }
         }
+    }
+
+    // Calls f(node, N) for every node of the stencil: the weights alone,
+    // in forEach's order (no gradients)
+    template<class Fn>
+    MPM_HOST_DEVICE inline void forEachWeight(const Lattice& L, Fn&& f) const
+    {
+        const Index s0 = L.stride[L.axes[0]];
+        forEachRow(L, [&](Index first, Real wjk)
+        {
+            for (int i = 0; i < W; ++i) f(first + i*s0, w[0][i]*wjk);
+        });
     }
 
     // Diagonal of the APIC inertia D_p = sum N (x_I - x_p)^2 per solved axis.

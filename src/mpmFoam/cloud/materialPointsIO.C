@@ -179,7 +179,7 @@ void Foam::writeMaterialPoints
 (
     const fvMesh& mesh,
     const meshLattice& ml,
-    const mpm::Particles& lattices,
+    const mpm::Particles& onOwners,
     const wordList& materialNames
 )
 {
@@ -190,12 +190,12 @@ void Foam::writeMaterialPoints
     mpm::Particles moved;
     if (move)
     {
-        moved = lattices;
+        moved = onOwners;
         const label n = toMeshCellRanks(mesh, moved);
         Info<< "Material points: " << n << " written by the processor of"
             << " their mesh cell, not of their lattice cell" << nl;
     }
-    const mpm::Particles& points = move ? moved : lattices;
+    const mpm::Particles& points = move ? moved : onOwners;
     passiveParticleCloud cloud(mesh, materialPointsCloudName, IDLList<passiveParticle>());
     const label n = points.size();
     // Locating particles builds the mesh's tet decomposition, and the cloud

@@ -305,12 +305,10 @@ void Foam::meshLattice::mapCellCentres()
     // may share the lattice cell holding their centres
     cellNode_.setSize(mesh_.nCells());
     cellIjk_.resize(mesh_.nCells());
-    cellOutside_.setSize(mesh_.nCells(), false);
     forAll(mesh_.cellCentres(), celli)
     {
         label ijk[3];
         indicesOf(mesh_.cellCentres()[celli], ijk);
-        cellOutside_[celli] = !insideLattice(mesh_.cellCentres()[celli]);
         cellIjk_[celli] = {int(ijk[0]), int(ijk[1]), int(ijk[2])};
         cellNode_[celli] = lattice_.realNode(ijk[0], ijk[1], ijk[2]);
         if (!cellsAreNodes_) continue;
@@ -671,7 +669,7 @@ Foam::point Foam::meshLattice::cellCentre(label globalCell) const
 bool Foam::meshLattice::ownsLatticeCell(label globalCell) const
 {
     if (cellsAreNodes_) return latticeCell_.found(globalCell);
-    return latticeOwner_.empty() || latticeOwner_[globalCell] == Pstream::myProcNo();
+    return latticeCellOwner(globalCell) == Pstream::myProcNo();
 }
 
 bool Foam::meshLattice::insideLattice(const point& x) const
