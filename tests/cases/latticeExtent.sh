@@ -153,16 +153,15 @@ check "and no point beyond the extent (largest x $xmax; the lattice ends at 5 x 
 
 # 4. Bad input
 BASE_CASE="$e"
-bad() { local v; v=$(freshCopy "$1"); rm -rf "$v"/[1-9]* "$v"/0.[0-9]* "$v"/postProcessing; echo "$v"; }
-v=$(bad outside); sed -i 's/^lattice .*/lattice { extent ((2 2 -1) (3 3 2)); }/' "$(props "$v")"
+v=$(unrunCopy outside); sed -i 's/^lattice .*/lattice { extent ((2 2 -1) (3 3 2)); }/' "$(props "$v")"
 expectFailure "an extent outside the mesh" "lattice extent .* does not overlap the mesh's bounding box" runIn "$v" mpmFoam
-v=$(bad noExtent); sed -i 's/^lattice .*/lattice { extentWall { type slip; } }/' "$(props "$v")"
+v=$(unrunCopy noExtent); sed -i 's/^lattice .*/lattice { extentWall { type slip; } }/' "$(props "$v")"
 expectFailure "extentWall without extent" "extentWall without extent" runIn "$v" mpmFoam
-v=$(bad inletWall); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); extentWall { type inlet; } }/' "$(props "$v")"
+v=$(unrunCopy inletWall); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); extentWall { type inlet; } }/' "$(props "$v")"
 expectFailure "an inlet as the extent's wall" "Valid type choices: noSlip slip friction outlet" runIn "$v" mpmFoam
-v=$(bad frictionNoMu); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); extentWall { type friction; } }/' "$(props "$v")"
+v=$(unrunCopy frictionNoMu); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); extentWall { type friction; } }/' "$(props "$v")"
 expectFailure "a friction extentWall without its coefficient" "Missing keyword frictionCoefficient for the friction extentWall" runIn "$v" mpmFoam
-v=$(bad region); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (0.9 1.1 2)); }/' "$(props "$v")"
+v=$(unrunCopy region); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (0.9 1.1 2)); }/' "$(props "$v")"
 expectFailure "a seeding region beyond the extent" "enlarge the mesh \(or the MPM lattice's extent" runIn "$v" mpmSetParticles
 
 finish

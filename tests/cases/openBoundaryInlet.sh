@@ -42,24 +42,23 @@ check "restart from t = 0.4: the cloud at 0.6 equals the uninterrupted run ($n p
 
 # Bad input
 BASE_CASE="$c"   # meshed and seeded; each variant drops its results
-bad() { local v; v=$(freshCopy "$1"); rm -rf "$v"/0.* "$v"/postProcessing; echo "$v"; }
-v=$(bad outward); sed -i 's/velocity      (0 -1 0);/velocity (0 1 0);/' "$(props "$v")"
+v=$(unrunCopy outward); sed -i 's/velocity      (0 -1 0);/velocity (0 1 0);/' "$(props "$v")"
 expectFailure "inlet velocity pointing out of the domain" "velocity \(0 1 0\) does not point into the domain" runIn "$v" mpmFoam
-v=$(bad noRate); sed -i '/massFlowRate/d' "$(props "$v")"
+v=$(unrunCopy noRate); sed -i '/massFlowRate/d' "$(props "$v")"
 expectFailure "inlet without a flow rate" "needs exactly one of massFlowRate \[kg/s\] and volumeFlowRate" runIn "$v" mpmFoam
-v=$(bad twoRates); sed -i 's/massFlowRate  table/volumeFlowRate constant 1; massFlowRate table/' "$(props "$v")"
+v=$(unrunCopy twoRates); sed -i 's/massFlowRate  table/volumeFlowRate constant 1; massFlowRate table/' "$(props "$v")"
 expectFailure "inlet with both flow rates" "needs exactly one of massFlowRate" runIn "$v" mpmFoam
-v=$(bad noVelocity); sed -i '/velocity      (0 -1 0);/d' "$(props "$v")"
+v=$(unrunCopy noVelocity); sed -i '/velocity      (0 -1 0);/d' "$(props "$v")"
 expectFailure "inlet without a velocity" "Missing keyword velocity for the inlet top" runIn "$v" mpmFoam
-v=$(bad wallKeyword); sed -i 's/pointsPerCell 2;/pointsPerCell 2; frictionCoefficient 0.3;/' "$(props "$v")"
+v=$(unrunCopy wallKeyword); sed -i 's/pointsPerCell 2;/pointsPerCell 2; frictionCoefficient 0.3;/' "$(props "$v")"
 expectFailure "friction coefficient on an inlet" "Unknown keyword 'frictionCoefficient' in inlet top" runIn "$v" mpmFoam
-v=$(bad outletKeyword); sed -i 's/bottom          { type outlet; }/bottom { type outlet; massFlowRate constant 1; }/' "$(props "$v")"
+v=$(unrunCopy outletKeyword); sed -i 's/bottom          { type outlet; }/bottom { type outlet; massFlowRate constant 1; }/' "$(props "$v")"
 expectFailure "flow rate on an outlet" "Unknown keyword 'massFlowRate' in outlet bottom" runIn "$v" mpmFoam
-v=$(bad badType); sed -i 's/type outlet;/type outflow;/' "$(props "$v")"
+v=$(unrunCopy badType); sed -i 's/type outlet;/type outflow;/' "$(props "$v")"
 expectFailure "unknown open type" "Unknown type 'outflow'.*|Valid type choices: noSlip slip friction periodic outlet inlet" runIn "$v" mpmFoam
-v=$(bad negative); sed -i 's/massFlowRate  table ((0 0) (0.1 4) (1 4));/massFlowRate constant -1;/' "$(props "$v")"
+v=$(unrunCopy negative); sed -i 's/massFlowRate  table ((0 0) (0.1 4) (1 4));/massFlowRate constant -1;/' "$(props "$v")"
 expectFailure "negative flow rate" "flow rate of the inlet top is negative" runIn "$v" mpmFoam
-v=$(bad badMaterial); sed -i 's/material      stream;/material sand;/' "$(props "$v")"
+v=$(unrunCopy badMaterial); sed -i 's/material      stream;/material sand;/' "$(props "$v")"
 expectFailure "inlet of an unknown material" "sand" runIn "$v" mpmFoam
 
 finish
