@@ -247,3 +247,61 @@ TEST(Subdomain, RandomDecompositionMatchesSerial)
         }
     }
 }
+
+// The exchange halo: cells a rank reads or writes beyond its stencils (a
+// fluid mesh's overlaps where the lattice is decomposed its own way). Owners
+// at random, each rank lists random extra cells anywhere in the box; sum()
+// over the exchange halo gives each owner the number of ranks listing its
+// cell, copy() gives that number back to every listing rank, and the step's
+// halo is the one built without extras.
+TEST(Subdomain, ExchangeHaloReachesExtraCells)
+{
+    Lattice G = box(9, 7, 5);
+    G.finalise();
+    const int nRanks = 3;
+    std::mt19937 rng(5);
+    std::vector<std::vector<std::array<int, 3>>> owned(nRanks), extra(nRanks);
+    std::map<Index, int> listed;   // global cell -> how many ranks list it
+    for (int k = 0; k < G.nCells[2]; ++k)
+    for (int j = 0; j < G.nCells[1]; ++j)
+    for (int i = 0; i < G.nCells[0]; ++i)
+    {
+        owned[rng() % nRanks].push_back({i, j, k});
+        for (int r = 0; r < nRanks; ++r)
+        {
+            if (rng() % 4 != 0) continue;
+            extra[r].push_back({i, j, k});
+            ++listed[G.cellIndex(i, j, k)];
+        }
+    }
+    World world(nRanks);
+    std::vector<std::thread> threads;
+    for (int r = 0; r < nRanks; ++r)
+    {
+        threads.emplace_back([&, r]
+        {
+            ThreadComm comm(world, r);
+            const std::array<bool, 3> periodic{false, false, false};
+            Subdomain plain, sd;
+            plain.build(G, owned[r], 1, periodic, comm);
+            sd.build(G, owned[r], 1, periodic, comm, extra[r]);
+            EXPECT_EQ(sd.haloNodes(), plain.haloNodes()) << "extras changed the step's halo";
+            EXPECT_GE(sd.haloNodes(Subdomain::HaloKind::exchange), sd.haloNodes());
+            std::vector<Real> a(std::size_t(sd.local().nNodes), 0.0);
+            for (const auto& c : extra[r]) a[std::size_t(sd.localNode(c[0], c[1], c[2]))] += 1;
+            sd.sum({a.data()}, Subdomain::HaloKind::exchange);
+            for (const auto& c : owned[r])
+            {
+                const Index g = G.cellIndex(c[0], c[1], c[2]);
+                const auto it = listed.find(g);
+                EXPECT_EQ(a[std::size_t(sd.localNode(c[0], c[1], c[2]))], it == listed.end() ? 0 : it->second);
+            }
+            sd.copy({a.data()}, Subdomain::HaloKind::exchange);
+            for (const auto& c : extra[r])
+            {
+                EXPECT_EQ(a[std::size_t(sd.localNode(c[0], c[1], c[2]))], listed.at(G.cellIndex(c[0], c[1], c[2])));
+            }
+        });
+    }
+    for (auto& t : threads) t.join();
+}

@@ -89,7 +89,8 @@ void Subdomain::build
     const std::vector<std::array<int, 3>>& owned,
     int reach,
     const std::array<bool, 3>& periodic,
-    const Communicator& comm
+    const Communicator& comm,
+    const std::vector<std::array<int, 3>>& extra
 )
 {
     comm_ = &comm;
@@ -109,7 +110,12 @@ void Subdomain::build
         for (int a = 0; a < 3; ++a) { lo[a] = std::min(lo[a], c[a]); hi[a] = std::max(hi[a], c[a]); }
     }
     const std::vector<std::int64_t> myBox{lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
-    if (owned.empty()) lo = hi = {0, 0, 0};
+    if (owned.empty() && extra.empty()) lo = hi = {0, 0, 0};
+    // The box holds the extra cells too (copies for the exchange)
+    for (const auto& c : extra)
+    {
+        for (int a = 0; a < 3; ++a) { lo[a] = std::min(lo[a], c[a]); hi[a] = std::max(hi[a], c[a]); }
+    }
     local_ = global;
     local_.checkGhostLayers = false;
     for (int a = 0; a < 3; ++a)
@@ -242,73 +248,98 @@ void Subdomain::build
         near.swap(grown);
     }
 
-    // Owner side, copies and their owners
+    // The halo of the nodes marked in `mask`: each copy (a node another
+    // rank owns, or a periodic image of an owned one) paired with its
+    // owner's node there, the owner told which of its nodes each is.
+    auto haloOf = [&](const std::vector<char>& mask)
+    {
+        Halo h;
+        h.copyIdx.assign(np, {});
+        h.ownerIdx.assign(np, {});
+        std::vector<std::vector<char>> ids(np), idsIn(np);
+        for (Index l = 0; l < nNodes; ++l)
+        {
+            if (ownerSide_[l] || !mask[l]) continue;
+            int r[3], c[3], img[3];
+            coords(l, r);
+            canonical(r, c, img);
+            const int q = ownerOfCell(globalCellId(img));
+            if (q < 0)
+            {
+                throw std::runtime_error
+                (
+                    "subdomain: no processor owns cell " + cellText(img)
+                  + ", which processor " + std::to_string(me) + "'s stencils reach"
+                );
+            }
+            if (q == me)
+            {
+                const Index owner = localNode(c[0], c[1], c[2]);
+                if (owner < 0) throw std::logic_error("subdomain: periodic image outside the box");
+                h.selfPairs.emplace_back(l, owner);
+                continue;
+            }
+            const Index gid = global.node(c[0] + global.padOf(0), c[1] + global.padOf(1), c[2] + global.padOf(2));
+            h.copyIdx[q].push_back(l);
+            appendBytes(ids[q], &gid, 1);
+        }
+        comm.exchange(ids, idsIn, false);
+        for (int s = 0; s < np; ++s)
+        {
+            const std::vector<Index> gids(indicesIn(idsIn[s]));
+            h.ownerIdx[s].resize(gids.size());
+            for (std::size_t k = 0; k < gids.size(); ++k)
+            {
+                const Index gid = gids[k];
+                int r[3];
+                Index rest = gid;
+                for (int a = 2; a >= 0; --a)
+                {
+                    const Index st = global.stride[a];
+                    r[a] = int(rest/st) - global.padOf(a);
+                    rest -= (r[a] + global.padOf(a))*st;
+                }
+                const Index l = localNode(r[0], r[1], r[2]);
+                if (l < 0 || !ownerSide_[l])
+                {
+                    throw std::logic_error
+                    (
+                        "subdomain: processor " + std::to_string(s) + " sends node "
+                      + cellText(r) + " that processor " + std::to_string(me) + " does not own"
+                    );
+                }
+                h.ownerIdx[s][k] = l;
+            }
+        }
+        return h;
+    };
+
+    // Owner side: the owned real nodes, and the wall mirror ghosts of
+    // owned nodes (a periodic image is a copy, even of an owned node)
     ownerSide_.assign(nNodes, 0);
-    copyIdx_.assign(np, {});
-    ownerIdx_.assign(np, {});
-    selfPairs_.clear();
-    std::vector<std::vector<char>> ids(np), idsIn(np);
     for (Index l = 0; l < nNodes; ++l)
     {
         int r[3], c[3], img[3];
         coords(l, r);
         canonical(r, c, img);
-        const int q = ownerOfCell(globalCellId(img));
         const bool isCanonical = r[0] == c[0] && r[1] == c[1] && r[2] == c[2];
-        if (q == me && isCanonical) { ownerSide_[l] = 1; continue; }
-        if (!near[l]) continue;
-        if (q < 0)
-        {
-            throw std::runtime_error
-            (
-                "subdomain: no processor owns cell " + cellText(img)
-              + ", which processor " + std::to_string(me) + "'s stencils reach"
-            );
-        }
-        if (q == me)
-        {
-            const Index owner = localNode(c[0], c[1], c[2]);
-            if (owner < 0) throw std::logic_error("subdomain: periodic image outside the box");
-            selfPairs_.emplace_back(l, owner);
-            continue;
-        }
-        const Index gid = global.node(c[0] + global.padOf(0), c[1] + global.padOf(1), c[2] + global.padOf(2));
-        copyIdx_[q].push_back(l);
-        appendBytes(ids[q], &gid, 1);
+        if (isCanonical && ownerOfCell(globalCellId(img)) == me) ownerSide_[l] = 1;
     }
-    comm.exchange(ids, idsIn, false);
-    for (int s = 0; s < np; ++s)
+    // The step's halo: the copies the stencils reach. The exchange's: those
+    // and the extra cells (the same lists when there are none).
+    step_ = haloOf(near);
+    // (collective: every rank builds the exchange's lists if any has extras)
+    exchangeIsStep_ = comm.max(std::int64_t(extra.size())) == 0;
+    if (!exchangeIsStep_)
     {
-        const std::vector<Index> gids(indicesIn(idsIn[s]));
-        ownerIdx_[s].resize(gids.size());
-        for (std::size_t k = 0; k < gids.size(); ++k)
-        {
-            const Index gid = gids[k];
-            int r[3];
-            Index rest = gid;
-            for (int a = 2; a >= 0; --a)
-            {
-                const Index st = global.stride[a];
-                r[a] = int(rest/st) - global.padOf(a);
-                rest -= (r[a] + global.padOf(a))*st;
-            }
-            const Index l = localNode(r[0], r[1], r[2]);
-            if (l < 0 || !ownerSide_[l])
-            {
-                throw std::logic_error
-                (
-                    "subdomain: processor " + std::to_string(s) + " sends node "
-                  + cellText(r) + " that processor " + std::to_string(me) + " does not own"
-                );
-            }
-            ownerIdx_[s][k] = l;
-        }
+        for (const auto& c : extra) near[localNode(c[0], c[1], c[2])] = 1;
+        exchange_ = haloOf(near);
     }
     neighbours_.clear();
     isNeighbour_.assign(np, 0);
     for (int q = 0; q < np; ++q)
     {
-        if (q != me && (!copyIdx_[q].empty() || !ownerIdx_[q].empty()))
+        if (q != me && (!step_.copyIdx[q].empty() || !step_.ownerIdx[q].empty()))
         {
             neighbours_.push_back(q);
             isNeighbour_[q] = 1;
@@ -318,9 +349,9 @@ void Subdomain::build
     recvBuf_.assign(np, {});
 
     haloNodeList_.clear();
-    for (const auto& list : copyIdx_) haloNodeList_.insert(haloNodeList_.end(), list.begin(), list.end());
-    for (const auto& list : ownerIdx_) haloNodeList_.insert(haloNodeList_.end(), list.begin(), list.end());
-    for (const auto& pr : selfPairs_) { haloNodeList_.push_back(pr.first); haloNodeList_.push_back(pr.second); }
+    for (const auto& list : step_.copyIdx) haloNodeList_.insert(haloNodeList_.end(), list.begin(), list.end());
+    for (const auto& list : step_.ownerIdx) haloNodeList_.insert(haloNodeList_.end(), list.begin(), list.end());
+    for (const auto& pr : step_.selfPairs) { haloNodeList_.push_back(pr.first); haloNodeList_.push_back(pr.second); }
     std::sort(haloNodeList_.begin(), haloNodeList_.end());
     haloNodeList_.erase(std::unique(haloNodeList_.begin(), haloNodeList_.end()), haloNodeList_.end());
 }
@@ -344,37 +375,44 @@ void Subdomain::post
     comm_->exchange(sendBuf_, recvBuf_, true);
 }
 
-void Subdomain::sum(const std::vector<Real*>& arrays) const
+const Subdomain::Halo& Subdomain::halo(HaloKind kind) const
 {
-    post(arrays, copyIdx_, ownerIdx_);
+    return kind == HaloKind::exchange && !exchangeIsStep_ ? exchange_ : step_;
+}
+
+void Subdomain::sum(const std::vector<Real*>& arrays, HaloKind kind) const
+{
+    const Halo& h = halo(kind);
+    post(arrays, h.copyIdx, h.ownerIdx);
     // Fixed order (rank by rank): the sums do not depend on message timing.
     for (int s = 0; s < comm_->size(); ++s)
     {
         if (s == comm_->rank())
         {
-            for (Real* a : arrays) for (const auto& pr : selfPairs_) a[pr.second] += a[pr.first];
+            for (Real* a : arrays) for (const auto& pr : h.selfPairs) a[pr.second] += a[pr.first];
             continue;
         }
         const Real* v = reinterpret_cast<const Real*>(recvBuf_[s].data());
-        for (Real* a : arrays) for (const Index l : ownerIdx_[s]) a[l] += *v++;
+        for (Real* a : arrays) for (const Index l : h.ownerIdx[s]) a[l] += *v++;
     }
 }
 
-void Subdomain::copy(const std::vector<Real*>& arrays) const
+void Subdomain::copy(const std::vector<Real*>& arrays, HaloKind kind) const
 {
-    post(arrays, ownerIdx_, copyIdx_);
-    for (Real* a : arrays) for (const auto& pr : selfPairs_) a[pr.first] = a[pr.second];
+    const Halo& h = halo(kind);
+    post(arrays, h.ownerIdx, h.copyIdx);
+    for (Real* a : arrays) for (const auto& pr : h.selfPairs) a[pr.first] = a[pr.second];
     for (int q = 0; q < comm_->size(); ++q)
     {
         const Real* v = reinterpret_cast<const Real*>(recvBuf_[q].data());
-        for (Real* a : arrays) for (const Index l : copyIdx_[q]) a[l] = *v++;
+        for (Real* a : arrays) for (const Index l : h.copyIdx[q]) a[l] = *v++;
     }
 }
 
-Index Subdomain::haloNodes() const
+Index Subdomain::haloNodes(HaloKind kind) const
 {
     Index n = 0;
-    for (const auto& c : copyIdx_) n += Index(c.size());
+    for (const auto& c : halo(kind).copyIdx) n += Index(c.size());
     return n;
 }
 

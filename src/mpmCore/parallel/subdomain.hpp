@@ -32,14 +32,18 @@ class Subdomain
 public:
     // global: the whole box (finalised); owned: global real (i, j, k) of the
     // cells this rank owns (may be empty: then no halo and no points, see
-    // build); periodic: per axis.
+    // build); periodic: per axis. extra: cells beyond the stencils' reach
+    // that this rank reads or writes through the exchange halo (a fluid
+    // mesh's cells overlap them where the lattice is decomposed its own
+    // way); they widen the box but not the step's halo.
     void build
     (
         const Lattice& global,
         const std::vector<std::array<int, 3>>& owned,
         int reach,
         const std::array<bool, 3>& periodic,
-        const Communicator& comm
+        const Communicator& comm,
+        const std::vector<std::array<int, 3>>& extra = {}
     );
 
     const Communicator& comm() const { return *comm_; }
@@ -63,13 +67,16 @@ public:
     // 1 for owner-side nodes (see above); the rest are copies or unused.
     const std::vector<char>& ownerSide() const { return ownerSide_; }
 
-    // Halo exchange of nodal arrays (each of local().nNodes values).
-    void sum(const std::vector<Real*>& arrays) const;
-    void copy(const std::vector<Real*>& arrays) const;
+    // Halo exchange of nodal arrays (each of local().nNodes values): the
+    // step's (the stencils' copies, every step) or the exchange's (those
+    // and the extra cells, for the fluid's maps).
+    enum class HaloKind { step, exchange };
+    void sum(const std::vector<Real*>& arrays, HaloKind kind = HaloKind::step) const;
+    void copy(const std::vector<Real*>& arrays, HaloKind kind = HaloKind::step) const;
 
     // Values sent per sum() or copy() per array, summed over ranks'
     // messages from here (for the cost log and the docs' estimate).
-    Index haloNodes() const;
+    Index haloNodes(HaloKind kind = HaloKind::step) const;
 
     // Every local node that sum() or copy() reads or writes, once: the
     // sparse grid keeps them active (grid/activeRegion.hpp), since a copy
@@ -109,10 +116,17 @@ private:
     std::vector<int> boxOwner_;              // owner of each box real cell (-1: none)
     std::unordered_map<Index, int> owner_;   // canonical cells outside the box
 
-    // Halo lists per rank: copies here -> owner there (sendIdx[r][k] goes
-    // to recvIdx on rank r at the same k), and owners here <- copies there.
-    std::vector<std::vector<Index>> copyIdx_, ownerIdx_;
-    std::vector<std::pair<Index, Index>> selfPairs_;   // (copy, owner) here
+    // A halo's lists per rank: copies here -> owner there (copyIdx[r][k]
+    // goes to ownerIdx on rank r at the same k), and owners here <- copies
+    // there; (copy, owner) pairs both here (periodic images).
+    struct Halo
+    {
+        std::vector<std::vector<Index>> copyIdx, ownerIdx;
+        std::vector<std::pair<Index, Index>> selfPairs;
+    };
+    Halo step_, exchange_;
+    bool exchangeIsStep_ = true;
+    const Halo& halo(HaloKind kind) const;
     std::vector<Index> haloNodeList_;
     std::vector<int> neighbours_;
     std::vector<char> isNeighbour_;

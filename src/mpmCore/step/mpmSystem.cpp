@@ -193,7 +193,21 @@ void MpmSystem::materialGrainVolume(std::vector<std::vector<Real>>& out)
     {
         sumHalo({o.data()});
         foldScalar(o);
+        if (subdomain_) copyHalo({o.data()}, Subdomain::HaloKind::exchange);
     }
+}
+
+MpmSystem::GridSample MpmSystem::sampleGrid()
+{
+    auto& g = grid_;
+    if (!subdomain_) return {g.mass.data(), g.volume.data(), {g.velocity[0].data(), g.velocity[1].data(), g.velocity[2].data()}};
+    sample_[0] = g.mass;
+    sample_[1] = g.volume;
+    for (int d = 0; d < 3; ++d) sample_[2 + d] = g.velocity[d];
+    std::vector<Real*> all;
+    for (auto& a : sample_) all.push_back(a.data());
+    copyHalo(all, Subdomain::HaloKind::exchange);
+    return {sample_[0].data(), sample_[1].data(), {sample_[2].data(), sample_[3].data(), sample_[4].data()}};
 }
 
 void MpmSystem::setCoverage(const std::vector<double>& coverage)
@@ -445,12 +459,12 @@ void MpmSystem::sumHalo(unsigned what)
     sumHalo(a);
 }
 
-void MpmSystem::sumHalo(const std::vector<Real*>& arrays)
+void MpmSystem::sumHalo(const std::vector<Real*>& arrays, Subdomain::HaloKind kind)
 {
     if (subdomain_)
     {
         ScopedTimer t(timers_.halo);
-        subdomain_->sum(arrays);
+        subdomain_->sum(arrays, kind);
         return;
     }
     // Serial: the periodic copies are the halo.
@@ -458,12 +472,12 @@ void MpmSystem::sumHalo(const std::vector<Real*>& arrays)
     for (Real* a : arrays) for (const Index c : region_.periodicCopies()) a[pc[c].second] += a[pc[c].first];
 }
 
-void MpmSystem::copyHalo(const std::vector<Real*>& arrays) const
+void MpmSystem::copyHalo(const std::vector<Real*>& arrays, Subdomain::HaloKind kind) const
 {
     if (subdomain_)
     {
         ScopedTimer t(timers_.halo);
-        subdomain_->copy(arrays);
+        subdomain_->copy(arrays, kind);
         return;
     }
     const auto& pc = boundary_.periodicCopies();

@@ -214,22 +214,33 @@ public:
     // spreadGrainVolume).
     void mapToGrid(std::vector<Real>* grainVolume = nullptr);
 
-    // Decomposed runs, after mapToGrid(): the owners' summed mass and
-    // volume sent to their halo copies too (a mesh sampling the lattice
-    // where another rank owns the node: meshLattice's own lattice)
-    void copyMassToHalo() { copyHalo({grid_.mass.data(), grid_.volume.data()}); }
-    // The same for any node arrays: every halo copy summed into its owner,
-    // or the owners' values sent to their copies (decomposed; serial: the
-    // periodic copies). For an exchange with a mesh whose cells touch
-    // another rank's nodes (fluidCoupling on a lattice of its own).
-    void sumToOwners(const std::vector<Real*>& arrays) { sumHalo(arrays); }
-    void copyToHalo(const std::vector<Real*>& arrays) const { copyHalo(arrays); }
+    // The grid's mass, volume and velocity where a mesh samples them, after
+    // mapToGrid() or a step: serial, the grid itself; decomposed, a copy
+    // whose every node of the exchange halo holds its owner's values (a
+    // mesh cell overlapping a lattice cell another rank owns: meshLattice's
+    // own lattice; Subdomain::HaloKind). A copy, not the grid: the grid's
+    // nodes outside the active region must stay zero.
+    struct GridSample
+    {
+        const Real* mass;
+        const Real* volume;
+        std::array<const Real*, 3> velocity;
+    };
+    GridSample sampleGrid();
+    // The same for any node arrays: every copy of the exchange halo summed
+    // into its owner, or the owners' values sent to their copies
+    // (decomposed; serial: the periodic copies). For an exchange with a
+    // mesh whose cells touch another rank's nodes (fluidCoupling on a
+    // lattice of its own).
+    void sumToOwners(const std::vector<Real*>& arrays) { sumHalo(arrays, Subdomain::HaloKind::exchange); }
+    void copyToHalo(const std::vector<Real*>& arrays) const { copyHalo(arrays, Subdomain::HaloKind::exchange); }
 
     // Grain volume (mass/rho0) of each material's points, spread to the
     // nodes with the shape functions and folded from the ghosts like the
     // grid volume: out[material][node]. The sum over materials is
     // grid().volume after mapToGrid() with constant grain volume. For
     // coupling models that differ per material (drag); one extra P2G.
+    // Decomposed: the owners' values on every copy of the exchange halo.
     void materialGrainVolume(std::vector<std::vector<Real>>& out);
 
     // The grain volume (mass/rho0) of the points spread to the nodes with
@@ -313,8 +324,8 @@ private:
     // values back to the copies (after the fill, before G2P). Decomposed:
     // the Subdomain's halo across ranks; serial: the periodic copies.
     void sumHalo(unsigned what);
-    void sumHalo(const std::vector<Real*>& arrays);
-    void copyHalo(const std::vector<Real*>& arrays) const;
+    void sumHalo(const std::vector<Real*>& arrays, Subdomain::HaloKind kind = Subdomain::HaloKind::step);
+    void copyHalo(const std::vector<Real*>& arrays, Subdomain::HaloKind kind = Subdomain::HaloKind::step) const;
     // Stops every rank with the same message when any point went non-finite
     // (firstBad: the local index of this rank's first bad point, or n).
     void stopIfNonFinite(Index firstBad, const char* what);
@@ -352,6 +363,7 @@ private:
     Lattice domain_;
     Lattice lattice_;
     std::shared_ptr<const Subdomain> subdomain_;
+    std::array<std::vector<Real>, 5> sample_;   // sampleGrid's copies
     Boundary boundary_;
     LevelSetWalls levelSet_;
     Index contained_ = 0;

@@ -160,6 +160,7 @@ void Foam::fluidCoupling::mapSolids()
         s.mapToGrid(overlaps_ ? &nodeGrainVolume_ : nullptr);
     }
     mpm::ScopedTimer timer(mapsTime_);
+    grid_ = s.sampleGrid();
     if (overlaps_)
     {
         s.spreadGrainVolume(nodeGrainVolume_);
@@ -183,7 +184,7 @@ void Foam::fluidCoupling::setGravity(const vector& g)
 
 Foam::vector Foam::fluidCoupling::solidVelocity(label celli) const
 {
-    const auto& v = mpm_.system().grid().velocity;
+    const auto& v = grid_.velocity;
     if (overlaps_) return overlapAverage(celli, v);
     const label I = mpm_.lattice().cellNode()[celli];
     return vector(v[0][I], v[1][I], v[2][I]);
@@ -191,7 +192,7 @@ Foam::vector Foam::fluidCoupling::solidVelocity(label celli) const
 
 Foam::vector Foam::fluidCoupling::overlapAverage
 (
-    label celli, const std::array<std::vector<mpm::Real>, 3>& a
+    label celli, const std::array<const mpm::Real*, 3>& a
 ) const
 {
     vector u(Zero);
@@ -268,7 +269,7 @@ Foam::scalar Foam::fluidCoupling::alphaSolid(label celli) const
         });
         return a/mpm_.lattice().cellVolume();
     }
-    return mpm_.system().grid().volume[mpm_.lattice().cellNode()[celli]]/mesh_.V()[celli];
+    return grid_.volume[mpm_.lattice().cellNode()[celli]]/mesh_.V()[celli];
 }
 
 void Foam::fluidCoupling::updateFluidFraction()
@@ -469,7 +470,11 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
             if (overlaps_)
             {
                 // The overlap average, as the drag was given to the nodes
-                Us[celli] = overlapAverage(celli, c.velocityIntegral)/c.time;
+                Us[celli] = overlapAverage
+                (
+                    celli,
+                    {c.velocityIntegral[0].data(), c.velocityIntegral[1].data(), c.velocityIntegral[2].data()}
+                )/c.time;
                 continue;
             }
             const label I = node[celli];

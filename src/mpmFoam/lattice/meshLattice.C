@@ -559,15 +559,12 @@ void clipTet(const tet& t, const mpm::Lattice& L, int axis, Foam::scalar kMin, A
 
 } // namespace
 
-void Foam::meshLattice::buildExchangeWeights() const
+void Foam::meshLattice::buildOverlaps() const
 {
     const label nCells = mesh_.nCells();
     weightStart_.setSize(nCells + 1);
-    DynamicList<label> nodes;
+    DynamicList<label> cells;
     DynamicList<scalar> fractions;
-    // The nodes the MPM arrays live on: the domain's, or this rank's box
-    const mpm::Lattice& arrays = subdomain_ ? subdomain_->local() : lattice_;
-    coverage_.assign(std::size_t(arrays.nNodes), 0.0);
     const pointField& pts = mesh_.points();
     std::map<label, scalar> overlap;
     for (label celli = 0; celli < nCells; ++celli)
@@ -580,24 +577,7 @@ void Foam::meshLattice::buildExchangeWeights() const
             if (!insideLattice(x)) return;
             label ijk[3];
             indicesOf(x, ijk);
-            label I = label(lattice_.realNode(ijk[0], ijk[1], ijk[2]));
-            if (subdomain_)
-            {
-                I = label(subdomain_->localNode(ijk[0], ijk[1], ijk[2]));
-                if (I < 0)
-                {
-                    FatalErrorInFunction
-                        << "Cell " << celli << " at " << cc << " of processor "
-                        << Pstream::myProcNo() << " overlaps lattice cell ("
-                        << ijk[0] << ' ' << ijk[1] << ' ' << ijk[2] << "), beyond"
-                        << " the lattice this processor holds: its mesh cells"
-                        << " are much larger than the lattice's, far from the"
-                        << " lattice cells it owns. Give a larger lattice"
-                        << " spacing or decompose for fewer processors."
-                        << exit(FatalError);
-                }
-            }
-            overlap[I] += v;
+            overlap[label(lattice_.cellIndex(ijk[0], ijk[1], ijk[2]))] += v;
         };
         for (const label facei : mesh_.cells()[celli])
         {
@@ -612,19 +592,78 @@ void Foam::meshLattice::buildExchangeWeights() const
         // moves between the two sides is conserved either way (the same
         // weights)
         const scalar V = mesh_.cellVolumes()[celli];
-        weightStart_[celli] = nodes.size();
+        weightStart_[celli] = cells.size();
         for (const auto& o : overlap)
         {
-            nodes.append(o.first);
+            cells.append(o.first);
             fractions.append(o.second/V);
-            coverage_[std::size_t(o.first)] += o.second/cellVolume_;
         }
     }
-    weightStart_[nCells] = nodes.size();
-    weightNode_.transfer(nodes);
+    weightStart_[nCells] = cells.size();
+    weightCell_.transfer(cells);
     weightFraction_.transfer(fractions);
-    Info<< "MPM lattice <-> mesh exchange: " << weightNode_.size() << " overlaps of "
-        << nCells << " cells with lattice cells (cut exactly by the lattice's planes)" << nl;
+    Info<< "MPM lattice <-> mesh exchange: "
+        << returnReduce(weightCell_.size(), sumOp<label>()) << " overlaps of "
+        << returnReduce(nCells, sumOp<label>()) << " cells with lattice cells"
+        << " (cut exactly by the lattice's planes)" << nl;
+}
+
+void Foam::meshLattice::localiseOverlaps() const
+{
+    if (weightStart_.empty()) buildOverlaps();
+    // The nodes the MPM arrays live on: the domain's, or this rank's box,
+    // which holds every lattice cell this rank's mesh cells overlap (the
+    // Subdomain's extra cells: overlappedCells)
+    const mpm::Lattice& arrays = subdomain_ ? subdomain_->local() : lattice_;
+    coverage_.assign(std::size_t(arrays.nNodes), 0.0);
+    weightNode_.setSize(weightCell_.size());
+    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
+    forAll(weightCell_, k)
+    {
+        const label lin = weightCell_[k];
+        const label r[3] = {lin % n0, (lin/n0) % n1, lin/(n0*n1)};
+        const label I = subdomain_
+          ? label(subdomain_->localNode(r[0], r[1], r[2]))
+          : label(lattice_.realNode(r[0], r[1], r[2]));
+        if (I < 0)
+        {
+            FatalErrorInFunction
+                << "Lattice cell (" << r[0] << ' ' << r[1] << ' ' << r[2]
+                << ") overlapped by processor " << Pstream::myProcNo()
+                << "'s cells lies beyond its box lattice" << abort(FatalError);
+        }
+        weightNode_[k] = I;
+    }
+    forAll(mesh_.cells(), celli)
+    {
+        const scalar V = mesh_.cellVolumes()[celli];
+        for (label k = weightStart_[celli]; k < weightStart_[celli + 1]; ++k)
+        {
+            coverage_[std::size_t(weightNode_[k])] += weightFraction_[k]*V/cellVolume_;
+        }
+    }
+    localised_ = true;
+}
+
+std::vector<std::array<int, 3>> Foam::meshLattice::overlappedCells() const
+{
+    if (weightStart_.empty()) buildOverlaps();
+    labelList lin(weightCell_);
+    Foam::sort(lin);
+    std::vector<std::array<int, 3>> out;
+    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
+    forAll(lin, k)
+    {
+        if (k && lin[k] == lin[k - 1]) continue;
+        out.push_back({int(lin[k] % n0), int((lin[k]/n0) % n1), int(lin[k]/(n0*n1))});
+    }
+    return out;
+}
+
+void Foam::meshLattice::setOwners(labelList&& owners)
+{
+    latticeOwner_.transfer(owners);
+    localised_ = false;
 }
 
 Foam::label Foam::meshLattice::fvCellOf(const point& x) const
@@ -645,6 +684,7 @@ Foam::label Foam::meshLattice::fvCellOf(const point& x) const
 void Foam::meshLattice::attach(const std::shared_ptr<const mpm::Subdomain>& subdomain)
 {
     subdomain_ = subdomain;
+    localised_ = false;
     forAll(cellNode_, celli)
     {
         const auto& r = cellIjk_[celli];

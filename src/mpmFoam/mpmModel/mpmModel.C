@@ -161,10 +161,13 @@ std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
     const int reach = mpm::MpmSystem::stencilReach(controls_.step.shape);
     try
     {
+        // Any other mesh: the box holds every lattice cell this rank's
+        // mesh cells overlap, owned here or not (the exchange halo)
         sd->build
         (
             lattice_.lattice(), lattice_.ownedLatticeCells(), reach,
-            mpm::Boundary::periodicAxes(lattice_.lattice(), walls), comm_
+            mpm::Boundary::periodicAxes(lattice_.lattice(), walls), comm_,
+            lattice_.cellsAreNodes() ? std::vector<std::array<int, 3>>() : lattice_.overlappedCells()
         );
     }
     catch (const std::exception& e)
@@ -397,7 +400,7 @@ void Foam::mpmModel::evolve(scalar dt)
 
 void Foam::mpmModel::updateFields()
 {
-    const mpm::GridState& g = system_.grid();
+    const mpm::MpmSystem::GridSample g = system_.sampleGrid();
     const labelList& node = lattice_.cellNode();
     if (!lattice_.cellsAreNodes())
     {
@@ -405,9 +408,7 @@ void Foam::mpmModel::updateFields()
         // overlaps (the exchange's weights, meshLattice::forEachOverlap):
         // the solid volume spread evenly over each lattice cell, the
         // velocity mass-weighted. Decomposed, an overlapped lattice cell
-        // may be another rank's: its halo copy holds the owner's values
-        // once they are sent (the velocity is).
-        if (Pstream::parRun()) system_.copyMassToHalo();
+        // may be another rank's: sampleGrid's copy holds the owner's values.
         const scalar VL = lattice_.cellVolume();
         forAll(node, celli)
         {

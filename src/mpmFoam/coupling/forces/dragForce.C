@@ -113,7 +113,7 @@ void Foam::dragForce::correct()
     forAll(node, celli)
     {
         const label I = node[celli];
-        const scalar volume = s.grid().volume[I];
+        const scalar volume = coupling_.grid().volume[I];
         const scalar alphaS = coupling_.cappedAlphaSolid(celli);
         beta[celli] = 0;
         if (alphaS <= 0) continue;
