@@ -150,6 +150,11 @@ public:
         Real contact = 0, const Lattice* domain = nullptr
     );
 
+    // The node planes again on another lattice of the same domain (a
+    // decomposed run's new box after a rebalance), the walls where they
+    // are now
+    void relocate(const Lattice& L) { if (!walls_.empty()) computeNodes(L); }
+
     bool empty() const { return walls_.empty(); }
     // Whether any wall is open (points may leave through it)
     bool hasOutlets() const { return hasOutlets_; }

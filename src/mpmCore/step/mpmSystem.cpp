@@ -80,6 +80,31 @@ void MpmSystem::setup
     lastResident_ = false;
 }
 
+void MpmSystem::changeSubdomain(std::shared_ptr<const Subdomain> subdomain)
+{
+    pullPoints();
+    const BoundarySpec spec = boundary_.spec();
+    subdomain_ = std::move(subdomain);
+    const Subdomain& sd = *subdomain_;
+    lattice_ = sd.local();
+    boundary_.build(domain_, spec, lattice_, sd.offset(), [&sd](Index c) { return sd.ownsCell(c); });
+    grid_.resize(lattice_.nNodes);
+    region_ = ActiveRegion();
+    region_.setDense(!options_.sparseGrid);
+    levelSet_.relocate(lattice_);
+    levelSetChanged_ = true;
+    if (!coupling_.K.empty()) coupling_.resize(lattice_.nNodes);
+    coverage_.clear();
+    coveredStencil_.clear();
+    for (auto& a : sample_) a.clear();
+    // The device mirrors are sized by the next step
+#ifdef MPM_HAVE_CUDA
+    if (device_) device_ = std::make_shared<DeviceStep>();
+#endif
+    residentConfigured_ = false;
+    hostAhead_ = true;
+}
+
 int MpmSystem::stencilReach(ShapeKind kind)
 {
     return dispatchShape(kind, [](auto k) { return decltype(k)::width/2; });

@@ -99,6 +99,14 @@ public:
         std::shared_ptr<const Subdomain> subdomain = nullptr
     );
 
+    // Decomposed runs: this rank's new share of the lattice (a rebalance),
+    // the points kept (migrate them to their new owners next). The node
+    // arrays are made again on the new box lattice, the walls' nodes too;
+    // the coupling's arrays are resized, to be filled again by their owner
+    // (fluidCoupling), with the coverage (setCoverage). The counts of the
+    // run (removed, migrated, clamped, steps) carry on.
+    void changeSubdomain(std::shared_ptr<const Subdomain> subdomain);
+
     // The lattice the arrays live on: the domain, or this rank's box.
     Lattice& lattice() { return lattice_; }
     const Lattice& lattice() const { return lattice_; }

@@ -130,9 +130,9 @@ Foam::label Foam::toMeshCellRanks(const fvMesh& mesh, mpm::Particles& P)
 }
 
 
-void Foam::toLatticeOwners(const meshLattice& lattice, mpm::Particles& P)
+Foam::label Foam::toLatticeOwners(const meshLattice& lattice, mpm::Particles& P)
 {
-    if (!Pstream::parRun()) return;
+    if (!Pstream::parRun()) return 0;
     const mpm::Lattice& L = lattice.lattice();
     // A lattice of its own holds its owners' table; a uniform box's
     // lattice cells are its ranks' mesh cells: each rank marks its own
@@ -162,5 +162,5 @@ void Foam::toLatticeOwners(const meshLattice& lattice, mpm::Particles& P)
                 << " lies in no cell of the mesh" << exit(FatalError);
         }
     }
-    sendPoints(P, dest);
+    return returnReduce(sendPoints(P, dest), sumOp<label>());
 }

@@ -55,25 +55,10 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
 {
     const dictionary& mpmDict = mpm.dict();
     overlaps_ = !mpm.lattice().cellsAreNodes();
-    if (overlaps_)
-    {
-        // Decomposed, a rank's cells overlap its halo copies too: the
-        // coverage is summed into the owners and sent back
-        const std::vector<double>& local = mpm.lattice().coverage();
-        coverage_.assign(local.begin(), local.end());
-        mpm.system().sumToOwners({coverage_.data()});
-        mpm.system().copyToHalo({coverage_.data()});
-        mpm.system().setCoverage(coverage_);
-        // Each node's sum of its overlaps' fractions (the mesh does not
-        // move): the denominators of the cells' averages onto the nodes
-        overlapWeight_.assign(coverage_.size(), 0.0);
-        forAll(mesh.cells(), celli)
-        {
-            mpm.lattice().forEachOverlap(celli, [&](label I, scalar T) { overlapWeight_[I] += T; });
-        }
-        mpm.system().sumToOwners({overlapWeight_.data()});
-        mpm.system().copyToHalo({overlapWeight_.data()});
-    }
+    // A rebalance makes the node arrays again: between fluid steps, not
+    // inside the solids' sub-cycles (advanceSolids)
+    mpm.rebalanceBetweenFluidSteps();
+    prepareExchange();
     if (!mpmDict.isDict("coupling"))
     {
         FatalIOErrorInFunction(mpmDict)
@@ -111,10 +96,7 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
         Info<< "    subCycles auto (from the MPM stable time step)" << nl;
     }
 
-    // Coupling arrays on the padded lattice; zero on ghosts.
-    auto& c = mpm_.system().coupling();
-    c.resize(mpm_.system().lattice().nNodes);
-    c.addedMassDensity = 0;
+    mpm_.system().coupling().addedMassDensity = 0;
     // Grains are incompressible: alpha.solid counts their volume m/rho.
     mpm_.system().setConstantGrainVolume(true);
     // Neither phase has gravity unless the gravity force sets it
@@ -131,6 +113,30 @@ Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase
     if (!forceNames_.found("gravity")) Info<< "    no gravity (not in forces)" << nl;
     Info<< endl;
     mapSolids();                    // alpha.solid from the grain volumes
+}
+
+void Foam::fluidCoupling::prepareExchange()
+{
+    mpmModel& mpm = mpm_;
+    // Coupling arrays on the padded lattice; zero on ghosts.
+    mpm.system().coupling().resize(mpm.system().lattice().nNodes);
+    if (!overlaps_) return;
+    // Decomposed, a rank's cells overlap copies of the exchange halo: the
+    // coverage is summed into the owners and sent back
+    const std::vector<double>& local = mpm.lattice().coverage();
+    coverage_.assign(local.begin(), local.end());
+    mpm.system().sumToOwners({coverage_.data()});
+    mpm.system().copyToHalo({coverage_.data()});
+    mpm.system().setCoverage(coverage_);
+    // Each node's sum of its overlaps' fractions (the mesh does not
+    // move): the denominators of the cells' averages onto the nodes
+    overlapWeight_.assign(coverage_.size(), 0.0);
+    forAll(mesh_.cells(), celli)
+    {
+        mpm.lattice().forEachOverlap(celli, [&](label I, scalar T) { overlapWeight_[I] += T; });
+    }
+    mpm.system().sumToOwners({overlapWeight_.data()});
+    mpm.system().copyToHalo({overlapWeight_.data()});
 }
 
 void Foam::fluidCoupling::reportCoverage() const
@@ -413,6 +419,13 @@ void Foam::fluidCoupling::termsToLattice()
 
 void Foam::fluidCoupling::advanceSolids(scalar dt)
 {
+    // The points out of balance: the lattice partitioned again, its node
+    // arrays made again, the solids mapped on it
+    if (mpm_.rebalance())
+    {
+        prepareExchange();
+        mapSolids();
+    }
     mpm::MpmSystem& s = mpm_.system();
     auto& c = s.coupling();
 

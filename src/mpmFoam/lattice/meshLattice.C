@@ -112,7 +112,7 @@ void Foam::meshLattice::build(const dictionary& mpmDict)
             << " or hierarchical)" << exit(FatalError);
     }
     const dictionary& ld = optionalSubDict(mpmDict, "lattice");
-    checkKeywords(ld, {"spacing", "extent", "extentWall"}, "lattice");
+    checkKeywords(ld, {"spacing", "extent", "extentWall", "balance", "maxImbalance"}, "lattice");
     vector h0(Zero);
     std::string notBox;
     const bool box = uniformBox(h0, notBox);
@@ -375,6 +375,7 @@ void Foam::meshLattice::decomposeOwn()
             }
         }
     }
+    meshOwner_ = latticeOwner_;
     labelList count(Pstream::nProcs(), Zero);
     for (const label o : latticeOwner_) ++count[o];
     Info<< "MPM lattice decomposition: lattice cells per processor " << count

@@ -8,6 +8,8 @@
 #include "compressionCheck.H"
 #include <sstream>
 #include "completeTimes.H"
+#include "meshCellSearch.H"
+#include "knownKeywords.H"
 #include <omp.h>
 #include <cstring>
 
@@ -22,6 +24,7 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     lattice_(mesh, dict_),
     materials_(dict_),
     controls_(mesh, dict_),
+    balance_(optionalSubDict(dict_, "lattice")),
     alphaSolid_
     (
         IOobject("alpha.solid", mesh.time().timeName(), mesh,
@@ -44,6 +47,7 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     wordList conditionPatch;
     std::vector<mpm::LevelSetWall> patchWalls;
     const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_, conditionPatch, patchWalls));
+    walls_ = walls;
     system_.setup(lattice_.lattice(), walls, controls_.step, decompose(walls));
     setLevelSetWalls(std::move(patchWalls));
     for (label m = 0; m < materials_.size(); ++m)
@@ -88,6 +92,9 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     {
         FatalErrorInFunction << e.what() << exit(FatalError);
     }
+    // The lattice's owners by points from the start, whatever the mesh's
+    // decomposition
+    rebalance(true);
     open_.reset
     (
         new openBoundaries(mesh, lattice_, dict_, materials_, walls, conditionPatch, system_)
@@ -182,6 +189,30 @@ std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
         << returnReduce(halo, sumOp<label>()) << "; halo neighbours: max "
         << returnReduce(label(sd->neighbourCount()), maxOp<label>()) << nl;
     return sd;
+}
+
+bool Foam::mpmModel::rebalance(bool force)
+{
+    if (!Pstream::parRun() || lattice_.cellsAreNodes() || !balance_.enabled()) return false;
+    const label n = label(system_.particles().size());
+    const scalar before = latticeBalance::imbalance(n);
+    if (!force && before <= balance_.maxImbalance()) return false;
+    const clockTime timer;
+    labelList owners(balance_.owners(lattice_, system_.particles(), lattice_.meshOwners()));
+    label cellsMoved = 0;
+    forAll(owners, c) cellsMoved += owners[c] != lattice_.latticeOwners()[c];
+    lattice_.setOwners(std::move(owners));
+    system_.changeSubdomain(decompose(walls_));
+    const label pointsMoved = toLatticeOwners(lattice_, system_.particles());
+    const scalar after = latticeBalance::imbalance(label(system_.particles().size()));
+    const scalar cost = returnReduce(timer.elapsedTime(), maxOp<scalar>());
+    balanceTime_ += cost;
+    ++rebalances_;
+    Info<< "MPM load balance at time " << mesh_.time().timeName()
+        << ": points per processor max/mean " << before << " -> " << after
+        << "; moved " << pointsMoved << " points and " << cellsMoved
+        << " lattice cells; " << cost << " s" << nl;
+    return true;
 }
 
 void Foam::mpmModel::reportBalance(Ostream& os) const
@@ -343,6 +374,7 @@ Foam::scalar Foam::mpmModel::courantNumber(scalar dt) const
 
 void Foam::mpmModel::evolve(scalar dt)
 {
+    if (balanceInEvolve_) rebalance();
     try
     {
         const floatingPointTrapsOff noTraps;
