@@ -1,0 +1,121 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# The MPM lattice balanced by points (latticeBalance, issue 27): its owners
+# follow the material points, not the fluid's cell decomposition, from the
+# start and again whenever max/mean points per processor exceeds
+# lattice { maxImbalance; }. A low maxImbalance forces frequent rebalances.
+#   1. Pure MPM on a lattice of its own (elasticDisks with a lattice extent;
+#      the disks meet in the middle and rebound): on 2 (simple), 3 (scotch)
+#      and 4 (simple 2 x 2) ranks with maxImbalance 1.01, the positions
+#      equal the serial run's at every written time (1e-10); rebalances
+#      happen during the run; the start is balanced (max/mean <= 1.05);
+#      count, id sum and mass checksum exact on every logged step.
+#   2. The same on 3 ranks with lattice { balance none; }: the owners
+#      follow the mesh, so the start is out of balance (the contrast).
+#   3. Coupled (the graded settling column, a lattice of its own) on 3
+#      ranks (scotch) with maxImbalance 1.01: points within 1e-9 and the
+#      fluid within 2e-9 of serial (the pressure solver's tolerance,
+#      parallelCoupled.sh), the grain volume on the cells exact at every
+#      logged step through the rebalances.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/caseTestFunctions"
+export OMP_NUM_THREADS=1
+
+# rebalances <log>: the number of "MPM load balance" lines after the start's,
+# and the start's max/mean after it
+rebalances()
+{
+    "$PY" - "$1" <<'PYEOF'
+import re, sys
+lines = [l for l in open(sys.argv[1], errors="replace") if l.startswith("MPM load balance at time")]
+after = [float(re.search(r"-> ([0-9.e+-]+);", l).group(1)) for l in lines]
+print(len(lines) - 1, after[0] if after else 99)
+PYEOF
+}
+
+# totals <log>: count, id sum and mass checksum of the first logged step
+totals()
+{
+    sed -n 's/^MPM: points per processor.*; total \([0-9]*\), id sum \([0-9]*\), mass checksum \([0-9]*\);.*/\1 \2 \3/p' "$1" | head -1
+}
+
+# --- 1. pure MPM ----------------------------------------------------------------
+s=$(copyTutorial mpm/elasticDisks serial)
+sed -i 's/^endTime .*/endTime 2;/; s/^writePrecision .*/writePrecision 17;/' "$s/system/controlDict"
+printf 'lattice { extent ((-1 -1 -1) (1.1 1.1 2)); maxImbalance 1.01; }\n' >> "$(props "$s")"
+runApps "$s" blockMesh mpmSetParticles mpmFoam || { echo "FAIL: serial run"; tail -30 "$s/log.mpmFoam"; exit 1; }
+
+# onRanks <name> <n> <method> <coeffs> [lattice entries]: the serial run's
+# settings, seeded serially, decomposed, run and reconstructed
+onRanks()
+{
+    local c; c=$(copyTutorial mpm/elasticDisks "$1")
+    cp "$s/system/controlDict" "$c/system/"
+    cp "$(props "$s")" "$(props "$c")"
+    [ -n "${5:-}" ] && sed -i "s/maxImbalance 1.01;/$5/" "$(props "$c")"
+    runApps "$c" blockMesh mpmSetParticles > /dev/null || { echo "FAIL: $1 setup"; failures=$((failures + 1)); }
+    decomposeCase "$c" "$2" "$3" "$4"
+    (cd "$c" && mpirun -np "$2" --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1) \
+        || { echo "FAIL: $1 on $2 ranks"; tail -30 "$c/log.mpmFoam"; failures=$((failures + 1)); }
+    echo "$c"
+}
+
+for run in "2 simple n (1 2 1);" "3 scotch " "4 simple n (2 2 1);"; do
+    read -r n method coeffs <<< "$run"
+    p=$(onRanks "ranks$n" "$n" "$method" "$coeffs")
+    grep "^MPM load balance" "$p/log.mpmFoam" | head -3 | sed 's/^/    /'
+    read -r nb start <<< "$(rebalances "$p/log.mpmFoam")"
+    check "$n ranks ($method): balanced at the start (max/mean $start) and rebalanced $nb times during the run" \
+        "start <= 1.05 and nb >= 3" start="$start" nb="$nb"
+    read -r d nt <<< "$(samePositions "$s" "$p")"
+    check "$n ranks ($method), rebalanced: positions equal the serial run's at $nt written times (max difference $d)" \
+        "d <= 1e-10 and nt >= 4" d="$d" nt="$nt"
+    read -r count idSum checksum <<< "$(totals "$p/log.mpmFoam")"
+    checkConservation "$n ranks ($method), through $nb rebalances" "$p/log.mpmFoam" "$count" "$idSum" "$checksum" 5
+done
+
+# --- 2. balance none: the owners follow the mesh --------------------------------
+p=$(onRanks none 3 scotch "" "balance none;")
+m=$(sed -n 's/^MPM: points per processor min [0-9]*, mean \([0-9.e+-]*\), max \([0-9]*\);.*/\2 \1/p' "$p/log.mpmFoam" | head -1 \
+    | awk '{print $1/$2}')
+grep -q "^MPM load balance" "$p/log.mpmFoam"; none=$?
+check "balance none on 3 ranks: no rebalance, and the mesh's owners start out of balance (max/mean $m)" \
+    "none == 1 and m > 1.1" none="$none" m="${m:-0}"
+
+# --- 3. coupled -----------------------------------------------------------------
+tEnd=0.2
+settling()
+{
+    local c; c=$(copyTutorial multiphase/settlingSuspension "$1")
+    sed -i 's/simpleGrading (1 1 1)/simpleGrading (1 4 1)/' "$c/system/blockMeshDict"
+    printf 'lattice { spacing 0.0005; maxImbalance 1.01; }\npointOutput hdf5;\n' >> "$(props "$c")"
+    sed -i "s/^endTime .*/endTime $tEnd;/; s/^writeInterval .*/writeInterval $tEnd;/; s/^writePrecision .*/writePrecision 17;/" "$c/system/controlDict"
+    sed -i 's/tolerance 1e-10; relTol 0.01;/tolerance 1e-14; relTol 0;/; s/tolerance 1e-10; relTol 0;/tolerance 1e-14; relTol 0;/' "$c/system/fvSolution"
+    runApps "$c" blockMesh mpmSetParticles > /dev/null || { echo "FAIL: set-up $1"; failures=$((failures + 1)); }
+    echo "$c"
+}
+serial=$(settling settlingSerial)
+(cd "$serial" && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: serial"; tail -20 "$serial/log.mpmFoam"; failures=$((failures + 1)); }
+par=$(settling settlingParallel)
+decomposeCase "$par" 3 scotch ""
+(cd "$par" && mpirun -np 3 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1) \
+    || { echo "FAIL: decomposed"; tail -30 "$par/log.mpmFoam"; failures=$((failures + 1)); }
+grep "^MPM load balance" "$par/log.mpmFoam" | head -3 | sed 's/^/    /'
+read -r nb start <<< "$(rebalances "$par/log.mpmFoam")"
+check "coupled on 3 ranks: balanced at the start (max/mean $start), rebalanced $nb times" "start <= 1.05 and nb >= 1" start="$start" nb="$nb"
+out=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$serial" "$par" "$tEnd" --fields U)
+ids=$(echo "$out" | awk '$1=="ids"{print $3}')
+w=$(echo "$out" | awk 'NR>2{if($2>m)m=$2}END{print m+0}')
+check "coupled on 3 ranks, rebalanced: points within 1e-9 of serial ($w)" "i == 1 and w <= 1e-9" i="${ids:-0}" w="$w"
+(cd "$par" && reconstructPar -latestTime -fields '(U p alpha.solid)' > log.reconstructPar 2>&1) \
+    || { echo "FAIL: reconstructPar"; failures=$((failures + 1)); }
+f=$(fluidDiff "$serial" "$par" "$tEnd")
+check "coupled on 3 ranks, rebalanced: fluid U, p, alpha.solid within 2e-9 of serial ($f)" "f <= 2e-9" f="${f:-1}"
+dv=$(sed -n 's/^Grain volume: .*relative difference \(.*\)/\1/p' "$par/log.mpmFoam" \
+    | "$PY" -c "import sys; v = [abs(float(x)) for x in sys.stdin]; print(max(v) if v else 1, len(v))")
+read -r dv nv <<< "$dv"
+check "coupled on 3 ranks: grain volume on the cells = the points' at $nv logged steps through the rebalances (max $dv)" \
+    "d <= 1e-12 and n >= 10" d="$dv" n="$nv"
+read -r count idSum checksum <<< "$(totals "$par/log.mpmFoam")"
+checkConservation "coupled on 3 ranks" "$par/log.mpmFoam" "$count" "$idSum" "$checksum" 5
+finish
