@@ -7,6 +7,8 @@ threads, 2 ranks x 2 threads, and 3 and 4 ranks (oversubscribed on a
   block3D  a 3D elastic slab thrown across a 32^3 box (about 190 000
            points, cubic B-splines, 60 fixed steps, no writes), decomposed
            in slices along x (simple, N 1 1), so the points are balanced;
+  block3DOwn  block3D on a lattice of its own (the same cells), balanced
+           by points (latticeBalance), on 1 and 2 ranks;
   coupled  the underwater granular column collapse tutorial at half its
            cell size (12 800 points in water, 200 x 100 cells), 40 fluid
            steps with their MPM sub-cycles, decomposed in slices along y.
@@ -61,6 +63,15 @@ def make_block3D(d):
     sh("blockMesh && mpmSetParticles", d)
 
 
+def make_block3DOwn(d):
+    """block3D on a lattice of its own (an extent around the whole box: the
+    same cells), so that the lattice's owners follow the points: balanced
+    at the start and again whenever max/mean exceeds 1.1 (latticeBalance)."""
+    make_block3D(d)
+    with open(os.path.join(d, "constant/mpmProperties"), "a") as f:
+        f.write("\nlattice { extent ((-1 -1 -1) (2 2 2)); }\n")
+
+
 def make_coupled(d):
     shutil.copytree(os.path.join(ROOT, "tutorials/multiphase/underwaterGranularCollapse"), d,
                     ignore=shutil.ignore_patterns("[1-9]*", "0.*", "processor*", "log.*", "*.png"))
@@ -97,22 +108,24 @@ def summary(log):
     t = {}
     for name, key in [("P2G", "p2g"), ("nodal update", "nodal"), ("G2P", "g2p"),
                       ("constitutive", "constitutive"),
-                      ("migration", "migration"), ("fluid \\(PIMPLE\\)", "fluid")]:
+                      ("migration", "migration"), ("load balance", "balance"),
+                      ("fluid \\(PIMPLE\\)", "fluid")]:
         m = re.search(r"^\s+" + name + r"\s+([0-9.eE+-]+) s", log, re.M)
         t[key] = float(m.group(1)) if m else 0.0
     # The halo's share, printed under each phase it is part of
     t["halo"] = sum(float(x) for x in re.findall(r"^\s+of which halo\s+([0-9.eE+-]+) s", log, re.M))
     m = re.search(r"MPM summary: (\d+) material points, (\d+) steps", log)
     t["points"], t["steps"] = int(m.group(1)), int(m.group(2))
-    t["loop"] = sum(t[k] for k in ("p2g", "nodal", "g2p", "constitutive", "migration", "fluid"))
+    t["loop"] = sum(t[k] for k in ("p2g", "nodal", "g2p", "constitutive", "migration", "balance", "fluid"))
+    t["rebalances"] = len(re.findall(r"^MPM load balance at time", log, re.M))
     m = re.findall(r"points per processor min \d+, mean ([0-9.e+]+), max (\d+)", log)
     t["imbalance"] = float(m[-1][1])/float(m[-1][0]) if m else 1.0
     return t
 
 
-def run_scene(name, base, cores, axis):
+def run_scene(name, base, cores, axis, configs=CONFIGS):
     rows = []
-    for ranks, threads in CONFIGS:
+    for ranks, threads in configs:
         d = base + ".%dx%d" % (ranks, threads)
         shutil.copytree(base, d)
         env = dict(os.environ, OMP_NUM_THREADS=str(threads))
@@ -131,13 +144,15 @@ def run_scene(name, base, cores, axis):
         note = "oversubscribed (%d processes on %d cores)" % (used, cores) if used > cores else ""
         print("%-6d %-7d %-10.3f %-8.2f %-10.2f %-8.1f %-9.1f %-9.2f %s" % (
             ranks, threads, t["loop"], t1/t["loop"], t1/t["loop"]/min(used, cores),
-            100*t["halo"]/t["loop"], 100*t["migration"]/t["loop"], t["imbalance"], note))
+            100*t["halo"]/t["loop"], 100*t["migration"]/t["loop"], t["imbalance"],
+            note + ("%d partitions by points, %.1f %% of the loop" % (t["rebalances"], 100*t["balance"]/t["loop"])
+                    if t["rebalances"] else "")))
     return rows
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--scenes", nargs="*", default=["block3D", "coupled"])
+    ap.add_argument("--scenes", nargs="*", default=["block3D", "block3DOwn", "coupled"])
     ap.add_argument("--keep", action="store_true")
     args = ap.parse_args()
     cores = os.cpu_count()
@@ -151,8 +166,9 @@ def main():
     try:
         for scene in args.scenes:
             base = os.path.join(work, scene)
-            {"block3D": make_block3D, "coupled": make_coupled}[scene](base)
-            run_scene(scene, base, cores, {"block3D": 0, "coupled": 1}[scene])
+            {"block3D": make_block3D, "block3DOwn": make_block3DOwn, "coupled": make_coupled}[scene](base)
+            run_scene(scene, base, cores, {"block3D": 0, "block3DOwn": 0, "coupled": 1}[scene],
+                      CONFIGS[:2] if scene == "block3DOwn" else CONFIGS)
     finally:
         if args.keep:
             print("\ncases kept in", work)

@@ -606,6 +606,9 @@ void Foam::mpmModel::summary
         reduce(*x, maxOp<double>());
     }
     const scalar io = returnReduce(ioTime_, maxOp<scalar>());
+    // The rebalances' partition, new box lattices and point moves (already
+    // the slowest rank's)
+    const scalar balance = balanceTime_;
     // Each selected effect by name: the diagnostics, then the others'
     List<Tuple2<word, scalar>> named(diagnostics_.size());
     forAll(diagnostics_, i)
@@ -613,7 +616,7 @@ void Foam::mpmModel::summary
         named[i] = Tuple2<word, scalar>("diagnostic " + diagnosticNames_[i], diagnosticTime_[i]);
     }
     named.append(effects);
-    scalar total = t.total() + io;
+    scalar total = t.total() + io + balance;
     for (auto& e : named)
     {
         reduce(e.second(), maxOp<scalar>());
@@ -646,6 +649,11 @@ void Foam::mpmModel::summary
     phase("G2P          ", t.g2p, t.haloIn.g2p);
     phase("constitutive ", t.constitutive, t.haloIn.constitutive);
     if (Pstream::parRun()) line("migration    ", t.migration);
+    if (rebalances_ > 0)
+    {
+        line("load balance ", balance);
+        os  << "        (" << rebalances_ << " partitions by points, the start's included)" << nl;
+    }
     line("I/O          ", io);
     for (const auto& e : named) line(e.first(), e.second());
     // 3D without APIC: which P2G loop the first steps' timing chose (this
