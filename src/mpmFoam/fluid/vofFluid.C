@@ -334,9 +334,22 @@ void Foam::vofFluid::alphaEqn
     );
     alphac.oldTime().primitiveFieldRef() = alphacOld.primitiveField();
 
+    // The fluid's own continuity residual d(aF)/dt + div(aF_f phi): the
+    // projected aF does not follow the fluid's flux exactly (the log's
+    // "alpha transport error"). alpha1 takes it with it, as in
+    // MPPICInterFoam's predictor: d(aF alpha1)/dt + div(aF_f phi alpha1) =
+    // alpha1 (d(aF)/dt + div(aF_f phi)), so a uniform alpha1 stays uniform
+    // and bounded; the water volume then changes by int alpha1 (residual),
+    // which is zero where alpha1 is uniform over the residual's cells
+    // (the residual sums to the fluid volume's change, zero: the grains are
+    // incompressible). With aF = 1 the residual is div(phi), the pressure
+    // solver's tolerance.
+    const volScalarField::Internal Sp
+    (
+        IOobject("alphaSp", mesh.time().timeName(), mesh),
+        (fvc::ddt(alphac) + fvc::div(alphaPhic))().internalField()
+    );
     zeroField Su;
-    zeroField Sp;
-    zeroField divU;
 
     // Euler only (checkInput): cnCoeff 1
     surfaceScalarField phic(mixture_.cAlpha()*mag(alphaPhic/mesh.magSf()));
@@ -370,7 +383,7 @@ void Foam::vofFluid::alphaEqn
                 upwind<scalar>(mesh, phiCN)
             ).fvmDiv(phiCN, alpha1)
          ==
-            Su + fvm::Sp(Sp + divU, alpha1)
+            fvm::Sp(Sp, alpha1)
         );
         alpha1Eqn.solve();
 
@@ -438,7 +451,7 @@ void Foam::vofFluid::alphaEqn
                 phiCN,
                 alphaPhi10_,
                 Sp,
-                (Su + divU*min(alpha1(), scalar(1)))(),
+                Su,
                 oneField(),
                 zeroField()
             );
