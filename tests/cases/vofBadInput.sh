@@ -4,7 +4,8 @@
 # docs/coupling.md): a clear error naming what is missing or wrong, never a
 # crash. On interFoam's damBreak set up for mpmFoam (vofMpmCase,
 # caseTestFunctions), each variant changing one thing:
-#  - an unknown fluidModel (the valid choices, and the closest);
+#  - an unknown fluidModel, an unknown alphaContinuity (the valid choices,
+#    and the closest);
 #  - no 0/alpha.water (names the field and setFields), no 0/p_rgh;
 #  - the properties of both fluids: no phases, no air { }, no rho in water;
 #  - the surface tension: missing (sigma 0 for none), wrong dimensions
@@ -23,6 +24,11 @@ c=$(freshCopy unknownModel)
 sed -i 's/^fluidModel .*/fluidModel      VoF;/' "$(tp "$c")"
 expectFailure "unknown fluidModel" "Unknown fluidModel 'VoF'; did you mean 'VOF'" runIn "$c" mpmFoam
 expectFailure "unknown fluidModel: the choices" "Valid fluidModel choices: single VOF" runIn "$c" mpmFoam
+
+c=$(freshCopy unknownContinuity)
+sed -i 's/^\( *nLimiterIter .*\)/\1\n        alphaContinuity bounde;/' "$c/system/fvSolution"
+expectFailure "unknown alphaContinuity" "Unknown alphaContinuity 'bounde'; did you mean 'bounded'" runIn "$c" mpmFoam
+expectFailure "unknown alphaContinuity: the choices" "Valid alphaContinuity choices: conservative bounded" runIn "$c" mpmFoam
 
 c=$(freshCopy noAlphaWater)
 rm "$c/0/alpha.water"

@@ -23,16 +23,16 @@
 #        U:           1e-2 x max |U| (interFoam's)
 #        p_rgh, p:    1e-3 x max |p_rgh|, max |p|
 #     Measured: alpha.water 2.2e-4, U 2.6e-3, p_rgh 2.2e-4, p 3.9e-5 (the
-#     largest over the writes). Why not closer: mpmFoam keeps the two
-#     mass-residual terms of the volume-averaged equations (as MPPICInterFoam
-#     and the single fluid): -U (d(aF rho)/dt + div(aF rhoPhi)) in the
-#     momentum equation and alpha1 (d(aF)/dt + div(aF phi)) in the alpha
-#     transport (the projected aF does not follow the fluid's flux exactly);
-#     with aF = 1 they are rho_air div(phi) and alpha1 div(phi), the pressure
-#     solver's tolerance, which interFoam does not have. With both removed
-#     the two runs were bitwise equal at t = 0.05 and 0.25 s (a one-off
-#     experiment: every other term, the MULES transport and the flux
-#     reconstruction included, reduces to interFoam's exactly at aF = 1).
+#     largest over the writes). Why not closer: mpmFoam's momentum equation
+#     keeps the mass-residual term -U (d(aF rho)/dt + div(aF rhoPhi)) of the
+#     volume-averaged form (as MPPICInterFoam and the single fluid); with
+#     aF = 1 it is U rho_air div(phi), the pressure solver's tolerance,
+#     which interFoam's conservative form does not have. With that term
+#     removed (and alphaContinuity bounded's alpha1 div(phi), not on by
+#     default) the two runs were bitwise equal at t = 0.05 and 0.25 s (a
+#     one-off experiment: every other term, the MULES transport and the
+#     flux reconstruction included, reduces to interFoam's exactly at
+#     aF = 1).
 #     The differences stay at the 1e-4 level while the flow is chaotic
 #     enough to amplify them over 250 steps.
 #  2. Sensitivity (the tolerances catch a wrong transport): mpmFoam with one
@@ -42,9 +42,9 @@
 #     larger differences still (0.35-0.49 in alpha.water).
 #  3. The water volume int alpha.water alpha.fluid dV, relative to the
 #     start, at every step (printed): its balance with the outflow through
-#     the boundary stays within 2e-6 (measured 8.3e-7 at worst), and it
+#     the boundary stays within 2e-6 (measured 8.2e-7 at worst), and it
 #     equals interFoam's (its "Phase-1 volume fraction" x the mesh volume)
-#     within 1e-7 of the start's at every step (measured 6.0e-9). interFoam's own water volume
+#     within 1e-7 of the start's at every step (measured 3.4e-9). interFoam's own water volume
 #     changes by -7.8e-7 over the run: the MULESCorr implicit upwind
 #     predictor is solved to the alpha solver's tolerance (1e-8), not
 #     exactly.

@@ -12,6 +12,20 @@
 
 namespace
 {
+    const char* continuityName(Foam::vofFluid::alphaContinuity c)
+    {
+        return c == Foam::vofFluid::alphaContinuity::bounded ? "bounded" : "conservative";
+    }
+
+    bool parseContinuity(const std::string& s, Foam::vofFluid::alphaContinuity& c)
+    {
+        for (const auto v : {Foam::vofFluid::alphaContinuity::conservative, Foam::vofFluid::alphaContinuity::bounded})
+        {
+            if (s == continuityName(v)) { c = v; return true; }
+        }
+        return false;
+    }
+
     Foam::IOdictionary readDict(const Foam::fvMesh& mesh, const Foam::word& name, const Foam::fileName& dir)
     {
         using namespace Foam;
@@ -234,6 +248,7 @@ Foam::vofFluid::vofFluid(fvMesh& mesh, const pimpleControl& pimple)
     mesh.setFluxRequired(alpha1_.name());
 
     const dictionary& ac = mesh.solverDict(alpha1_.name());
+    continuity_ = readChoice(ac, "alphaContinuity", parseContinuity, continuityName, "conservative bounded", alphaContinuity::conservative);
     Info<< "    VOF: " << alpha1_.name() << " in (" << mixture_.phase1Name() << " "
         << mixture_.phase2Name() << "), rho " << mixture_.rho1().value() << " "
         << mixture_.rho2().value() << ", nu "
@@ -334,20 +349,21 @@ void Foam::vofFluid::alphaEqn
     );
     alphac.oldTime().primitiveFieldRef() = alphacOld.primitiveField();
 
-    // The fluid's own continuity residual d(aF)/dt + div(aF_f phi): the
+    // The fluid's own continuity residual R = d(aF)/dt + div(aF_f phi): the
     // projected aF does not follow the fluid's flux exactly (the log's
-    // "alpha transport error"). alpha1 takes it with it, as in
-    // MPPICInterFoam's predictor: d(aF alpha1)/dt + div(aF_f phi alpha1) =
-    // alpha1 (d(aF)/dt + div(aF_f phi)), so a uniform alpha1 stays uniform
-    // and bounded; the water volume then changes by int alpha1 (residual),
-    // which is zero where alpha1 is uniform over the residual's cells
-    // (the residual sums to the fluid volume's change, zero: the grains are
-    // incompressible). With aF = 1 the residual is div(phi), the pressure
-    // solver's tolerance.
+    // "alpha transport error"). bounded: alpha1 takes it with it, as in
+    // MPPICInterFoam's predictor, d(aF alpha1)/dt + div(aF_f phi alpha1) =
+    // alpha1 R: a uniform alpha1 stays uniform and bounded, the water volume
+    // changes by int alpha1 R (zero where alpha1 is uniform over R's cells:
+    // R sums to the fluid volume's change, zero, the grains being
+    // incompressible). conservative: no source, the water volume is kept
+    // and alpha1 drifts off its bounds where R is not zero. With aF = 1, R
+    // is div(phi), the pressure solver's tolerance.
     const volScalarField::Internal Sp
     (
         IOobject("alphaSp", mesh.time().timeName(), mesh),
-        (fvc::ddt(alphac) + fvc::div(alphaPhic))().internalField()
+        (continuity_ == alphaContinuity::bounded ? scalar(1) : scalar(0))
+       *(fvc::ddt(alphac) + fvc::div(alphaPhic))().internalField()
     );
     zeroField Su;
 
