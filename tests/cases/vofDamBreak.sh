@@ -62,6 +62,8 @@
 #     serial one (the pressure solver's tolerance; both measured: alpha.water
 #     2.6e-6, U 6.8e-5, p_rgh 1.0e-5): each within 1.5 x interFoam's own
 #     serial-decomposed difference and 1e-3.
+#  8. foamRun -solver mpmFoam (to 0.05 s) writes mpmFoam's alpha.water, U,
+#     p_rgh and p at 0.05 s, byte for byte.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -224,6 +226,19 @@ if ip=$(decomposed "$ifoam" interFoam.decomposed interFoam) && mp=$(decomposed "
         ma="${ma:-nan}" ia="${ia:-nan}" mu="${mu:-nan}" iu="${iu:-nan}" mp="${mpr:-nan}" ip="${ipr:-nan}"
 else
     echo "FAIL: the decomposed runs"; tail -20 "$SCRATCH"/*.decomposed/log.* 2>/dev/null | tail -30; failures=$((failures + 1))
+fi
+
+# --- 8. foamRun -solver mpmFoam ------------------------------------------------
+fr="$SCRATCH/foamRun"
+cp -r "$mfoam" "$fr"
+rm -rf "$fr"/0.[0-9]* "$fr"/log.mpmFoam "$fr/postProcessing"
+sed -i 's/^endTime .*/endTime 0.05;/' "$fr/system/controlDict"
+if runIn "$fr" foamRun -solver mpmFoam > "$fr/log.foamRun" 2>&1; then
+    same=0
+    for f in alpha.water U p_rgh p; do cmp -s "$mfoam/0.05/$f" "$fr/0.05/$f" && same=$((same + 1)); done
+    check "foamRun -solver mpmFoam: alpha.water, U, p_rgh, p at 0.05 s byte for byte mpmFoam's ($same of 4)" "n == 4" n="$same"
+else
+    echo "FAIL: foamRun -solver mpmFoam"; tail -20 "$fr/log.foamRun"; failures=$((failures + 1))
 fi
 
 # --- 2. sensitivity: one alpha corrector fewer must be seen -------------------
