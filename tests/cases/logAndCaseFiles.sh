@@ -6,7 +6,13 @@
 #    line (simulated time, % done, wall time left); logInterval 1 logs them
 #    all;
 #  - the annotated minimal etc/caseDicts/{mpm,coupled}/{fvSchemes,fvSolution}
-#    run a pure MPM and a coupled tutorial in place of theirs;
+#    run a pure MPM and a coupled tutorial in place of theirs (the coupled
+#    one with etc/caseDicts/coupled/transportProperties too, fluidModel
+#    single); etc/caseDicts/coupled/VOF/{fvSchemes,fvSolution,
+#    transportProperties} run interFoam's damBreak with mpmFoam's VOF fluid
+#    (20 steps; divSchemes default none: every scheme it looks up is there),
+#    and give the results of the damBreak's own files (vofDamBreak.sh) to
+#    round-off, as they hold the same settings;
 #  - mpmFoam -help says what it does and where the annotated files are.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
@@ -16,6 +22,7 @@ runApps "$c" blockMesh mpmSetParticles || { echo "FAIL: set-up"; exit 1; }
 # 20 fluid steps, no write time inside; the annotated coupled files
 sed -i 's/^endTime .*/endTime 0.4;/' "$c/system/controlDict"
 cp "$MPMFOAM_ROOT/etc/caseDicts/coupled/fvSchemes" "$MPMFOAM_ROOT/etc/caseDicts/coupled/fvSolution" "$c/system/"
+cp "$MPMFOAM_ROOT/etc/caseDicts/coupled/transportProperties" "$c/constant/"
 d=$(cp -r "$c" "$SCRATCH/packedBedEvery" && echo "$SCRATCH/packedBedEvery")
 sed -i 's/^logInterval .*/logInterval 5;/' "$(props "$c")"
 
@@ -42,6 +49,22 @@ if echo "$last" | grep -qE "s left \(rate of the last [0-9.e-]+ s, \+-[0-9]+ %\)
     echo "PASS: the last progress line's estimate is the recent rate's, with its spread: $last"
 else
     echo "FAIL: the last progress line does not give the recent rate and its spread: $last"; failures=$((failures + 1))
+fi
+
+# The VOF fluid's annotated files on interFoam's damBreak, 20 steps
+dam=$(damBreakCase damBreak) || exit 1
+sed -i 's/^endTime .*/endTime 0.02;/; s/^writeInterval .*/writeInterval 20;/' "$dam/system/controlDict"
+v=$(vofMpmCase "$dam" vofOwnFiles) || exit 1
+a=$(vofMpmCase "$dam" vofAnnotated) || exit 1
+cp "$MPMFOAM_ROOT/etc/caseDicts/coupled/VOF/fvSchemes" "$MPMFOAM_ROOT/etc/caseDicts/coupled/VOF/fvSolution" "$a/system/"
+cp "$MPMFOAM_ROOT/etc/caseDicts/coupled/VOF/transportProperties" "$a/constant/"
+if runApps "$v" mpmFoam && runApps "$a" mpmFoam && grep -q "fluidModel VOF$" "$a/log.mpmFoam"; then
+    diff=$("$PY" -c "
+import numpy as np, mpmPost
+print(max(np.abs(np.asarray(mpmPost.read_internal_field('$v', '0.02', f), float) - np.asarray(mpmPost.read_internal_field('$a', '0.02', f), float)).max()/np.abs(np.asarray(mpmPost.read_internal_field('$v', '0.02', f), float)).max() for f in ['alpha.water', 'U', 'p_rgh']))")
+    check "the VOF fluid runs on etc/caseDicts/coupled/VOF files, as on the damBreak's own (max relative difference ${diff:-nan})" "d <= 1e-12" d="${diff:-nan}"
+else
+    echo "FAIL: the VOF fluid with etc/caseDicts/coupled/VOF files"; tail -20 "$a/log.mpmFoam"; failures=$((failures + 1))
 fi
 
 p=$(copyTutorial mpm/axialBar axialBar)

@@ -65,7 +65,8 @@ void Foam::printCoupledTimeStepAdvice
     c.lawName = materials.model(material);
     c.dragName = mpm.dict().subDict("materials").subDict(materials.names()[material])
         .subDict("drag").get<word>("model");
-    c.rhoF = coupling.fluid().rho().value();
+    // The densest fluid (the VOF mixture's water): the stiffest drag
+    c.rhoF = gMax(coupling.fluid().rho().primitiveField());
     c.nuF = gMax(nu.primitiveField());
     c.h = mpm.system().lattice().h;
     c.dt = fluidDeltaT;

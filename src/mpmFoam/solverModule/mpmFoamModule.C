@@ -29,8 +29,9 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh, bool adviseTimeStep)
     if (fluidPhase::present(mesh))
     {
         pimple_.reset(new pimpleControl(mesh));
-        fluid_.reset(new fluidPhase(mesh, pimple_()));
+        fluid_ = fluidPhase::New(mesh, pimple_());
         coupling_.reset(new fluidCoupling(mesh, mpm_, fluid_()));
+        fluid_->setGravity(coupling_->g());
 
         checkStep(runTime, "the fluid step; the grains sub-cycle within it");
         if (coupling_->timeStepAdvice() || adviseTimeStep)
@@ -45,6 +46,12 @@ Foam::mpmFoamModule::mpmFoamModule(fvMesh& mesh, bool adviseTimeStep)
         {
             maxCo_ = readBounded(cd, "maxCo", 1, SMALL, GREAT);
             maxFluidDeltaT_ = readBounded(cd, "maxDeltaT", GREAT, SMALL, GREAT);
+            // VOF: the interface Courant number too, as interFoam's
+            // setDeltaT.H (default: maxCo)
+            if (fluid_->type() == fluidPhase::model::VOF)
+            {
+                maxAlphaCo_ = readBounded(cd, "maxAlphaCo", maxCo_, SMALL, GREAT);
+            }
         }
         Info<< endl;
     }
@@ -124,7 +131,11 @@ Foam::scalar Foam::mpmFoamModule::maxDeltaT() const
     // does (growth at most 20 % a step, capped by maxDeltaT).
     if (!adjustFluidStep_) return VGREAT;
     const scalar dt = runTime.deltaTValue();
-    const scalar maxFact = maxCo_/(fluid_->courantNumber(dt) + SMALL);
+    scalar maxFact = maxCo_/(fluid_->courantNumber(dt) + SMALL);
+    if (fluid_->type() == fluidPhase::model::VOF)
+    {
+        maxFact = min(maxFact, maxAlphaCo_/(fluid_->interfaceCourantNumber(dt) + SMALL));
+    }
     const scalar fact = min(min(maxFact, 1 + 0.1*maxFact), 1.2);
     return min(fact*dt, maxFluidDeltaT_);
 }
@@ -155,7 +166,12 @@ void Foam::mpmFoamModule::prePredictor()
     // fluid then sees their new fraction and velocity).
     // The fluid Courant number of this step, from the last flux.
     const scalar Co = fluid_->courantNumber(dt);
-    Info<< "fluid: Courant Number max " << Co << " deltaT = " << dt << nl
+    Info<< "fluid: Courant Number max " << Co;
+    if (fluid_->type() == fluidPhase::model::VOF)
+    {
+        Info<< ", interface Courant Number max " << fluid_->interfaceCourantNumber(dt);
+    }
+    Info<< " deltaT = " << dt << nl
         << "Time = " << runTime.timeName() << nl << endl;
     if (!adjustFluidStep_ && Co > 1 && !fluidCourantWarned_)
     {
@@ -195,6 +211,7 @@ void Foam::mpmFoamModule::pressureCorrector()
     Info<< "fluid: continuity error " << fluid_->continuityError()
         << ", min alpha.fluid " << gMin(fluid_->alpha().primitiveField())
         << ", alpha transport error " << fluid_->alphaTransportError() << nl;
+    fluid_->report(Info);
 }
 
 void Foam::mpmFoamModule::postSolve()

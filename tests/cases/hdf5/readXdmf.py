@@ -7,6 +7,7 @@ check against the run's own OpenFOAM output:
 OUT.npz: times, nPoints, pointId, stress (9 components per point, as
 ParaView expands the file's symmetric tensors), U, the lattice's bounds,
 dimensions and cell arrays alpha.solid, U.solid (VTK order, x fastest),
+every cell array as cell:<name> (the fluid's U, alpha.water, p_rgh, ...),
 and every cell array's name.
 """
 import sys
@@ -46,6 +47,8 @@ out = {
 }
 for f in ("alpha.solid", "U.solid"):
     out[f] = vtk_to_numpy(cd.GetArray(f))
+for i in range(cd.GetNumberOfArrays()):
+    out["cell:" + cd.GetArrayName(i)] = vtk_to_numpy(cd.GetArray(i))
 np.savez(sys.argv[2], **out)
 print("XDMF: %d times (%s), last %g: %d points, lattice %s, cell arrays %s; blocks %s"
       % (len(times), " ".join("%g" % t for t in times), times[-1], out["nPoints"], out["dimensions"],

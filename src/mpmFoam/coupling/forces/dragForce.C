@@ -102,7 +102,9 @@ void Foam::dragForce::correct()
     const labelList& node = coupling_.mpm().lattice().cellNode();
     const fluidPhase& fluid = coupling_.fluid();
     const volVectorField& U = fluid.U();
-    const scalar rhoF = fluid.rho().value();
+    // The local density and viscosity (the VOF fluid's mixture; uniform for
+    // the single fluid)
+    const volScalarField& rho = fluid.rho();
     const volScalarField mu(fluid.mu());
     volScalarField& beta = coupling_.fluid().beta();
     if (!singleDragLaw_) s.materialGrainVolume(materialVolume_);
@@ -120,7 +122,7 @@ void Foam::dragForce::correct()
         const scalar slip = mag(U[celli] - coupling_.solidVelocity(celli));
         if (singleDragLaw_)
         {
-            beta[celli] = dragLaws_[0]->beta(1 - alphaS, slip, rhoF, mu[celli]);
+            beta[celli] = dragLaws_[0]->beta(1 - alphaS, slip, rho[celli], mu[celli]);
             continue;
         }
         forAll(dragLaws_, m)
@@ -128,7 +130,7 @@ void Foam::dragForce::correct()
             const scalar share = materialVolume_[m][I]/volume;
             if (dragLaws_[m] && share > 0)
             {
-                beta[celli] += share*dragLaws_[m]->beta(1 - alphaS, slip, rhoF, mu[celli]);
+                beta[celli] += share*dragLaws_[m]->beta(1 - alphaS, slip, rho[celli], mu[celli]);
             }
         }
     }

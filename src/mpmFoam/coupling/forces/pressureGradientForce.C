@@ -19,13 +19,14 @@ Foam::pressureGradientForce::pressureGradientForce
 
 void Foam::pressureGradientForce::correct()
 {
-    gradp_ = coupling_.fluid().gradp()().primitiveField();
+    // [Pa/m]: rho grad p of the single fluid's kinematic p, the VOF
+    // fluid's grad p
+    gradp_ = coupling_.fluid().gradP()().primitiveField();
 }
 
 void Foam::pressureGradientForce::addTo(solidForceTerms& t) const
 {
-    const scalar rhoF = coupling_.fluid().rho().value();
-    forAll(gradp_, celli) t.F[celli] -= rhoF*gradp_[celli];
+    forAll(gradp_, celli) t.F[celli] -= gradp_[celli];
     if (coupling_.mode() == fluidCoupling::couplingMode::oneWay || coupling_.frozenFluid()) return;
 
     const volScalarField& beta = coupling_.fluid().beta();

@@ -23,7 +23,8 @@ Foam::virtualMassForce::virtualMassForce
     auto& c = coupling.mpm().system().coupling();
     const label nNodes = label(coupling.mpm().system().lattice().nNodes);
     for (auto& a : c.fluidAcceleration) a.assign(nNodes, 0.0);
-    c.addedMassDensity = Cvm_*coupling.fluid().rho().value();
+    // One density (enableVirtualMass refuses a fluid of several)
+    c.addedMassDensity = Cvm_*gMax(coupling.fluid().rho().primitiveField());
 }
 
 void Foam::virtualMassForce::correct()
