@@ -112,20 +112,10 @@ done
 
 # --- decomposed -------------------------------------------------------------------
 tEnd=0.2
-decomposedSetup()
-{
-    local c; c=$(copyTutorial multiphase/settlingSuspension "$1")
-    sed -i 's/simpleGrading (1 1 1)/simpleGrading (1 4 1)/' "$c/system/blockMeshDict"
-    printf 'lattice { spacing 0.0005; }\npointOutput hdf5;\n' >> "$(props "$c")"
-    sed -i "s/^endTime .*/endTime $tEnd;/; s/^writeInterval .*/writeInterval $tEnd;/; s/^writePrecision .*/writePrecision 17;/" "$c/system/controlDict"
-    sed -i 's/tolerance 1e-10; relTol 0.01;/tolerance 1e-14; relTol 0;/; s/tolerance 1e-10; relTol 0;/tolerance 1e-14; relTol 0;/' "$c/system/fvSolution"
-    runApps "$c" blockMesh mpmSetParticles || { echo "FAIL: set-up $1"; failures=$((failures + 1)); }
-    echo "$c"
-}
 export OMP_NUM_THREADS=1
-serial=$(decomposedSetup settlingSerial)
+serial=$(gradedSettling settlingSerial "$tEnd")
 (cd "$serial" && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: serial"; tail -20 "$serial/log.mpmFoam"; failures=$((failures + 1)); }
-par=$(decomposedSetup settlingParallel)
+par=$(gradedSettling settlingParallel "$tEnd")
 decomposeCase "$par" 2 simple "n (1 2 1);"
 (cd "$par" && mpirun -np 2 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1) \
     || { echo "FAIL: decomposed"; tail -30 "$par/log.mpmFoam"; failures=$((failures + 1)); }

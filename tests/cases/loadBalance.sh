@@ -102,19 +102,9 @@ check "balance none on 3 ranks: no rebalance, and the mesh's owners start out of
 
 # --- 3. coupled -----------------------------------------------------------------
 tEnd=0.2
-settling()
-{
-    local c; c=$(copyTutorial multiphase/settlingSuspension "$1")
-    sed -i 's/simpleGrading (1 1 1)/simpleGrading (1 4 1)/' "$c/system/blockMeshDict"
-    printf 'lattice { spacing 0.0005; maxImbalance 1.01; }\npointOutput hdf5;\n' >> "$(props "$c")"
-    sed -i "s/^endTime .*/endTime $tEnd;/; s/^writeInterval .*/writeInterval $tEnd;/; s/^writePrecision .*/writePrecision 17;/" "$c/system/controlDict"
-    sed -i 's/tolerance 1e-10; relTol 0.01;/tolerance 1e-14; relTol 0;/; s/tolerance 1e-10; relTol 0;/tolerance 1e-14; relTol 0;/' "$c/system/fvSolution"
-    runApps "$c" blockMesh mpmSetParticles > /dev/null || { echo "FAIL: set-up $1"; failures=$((failures + 1)); }
-    echo "$c"
-}
-serial=$(settling settlingSerial)
+serial=$(gradedSettling settlingSerial "$tEnd" "maxImbalance 1.01;")
 (cd "$serial" && mpmFoam > log.mpmFoam 2>&1) || { echo "FAIL: serial"; tail -20 "$serial/log.mpmFoam"; failures=$((failures + 1)); }
-par=$(settling settlingParallel)
+par=$(gradedSettling settlingParallel "$tEnd" "maxImbalance 1.01;")
 decomposeCase "$par" 3 scotch ""
 (cd "$par" && mpirun -np 3 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1) \
     || { echo "FAIL: decomposed"; tail -30 "$par/log.mpmFoam"; failures=$((failures + 1)); }

@@ -20,7 +20,8 @@
 #     and across the stream within the patch (0 to 0.2 m);
 #   - the balance, initial + injected - removed = present, on every step,
 #     and what leaves through the outlet once the stream reaches it.
-#   The rotated case also on 2 ranks: the serial cloud.
+#   The rotated case also on 2 ranks, and on 3 with frequent rebalances by
+#   points: the serial cloud.
 #   3. bad input: an inlet off the box that is not one plane, and one partly
 #      on a side of the lattice's box and partly off it.
 # A wrong normal, layer spacing, point volume or Dirichlet velocity breaks
@@ -70,6 +71,24 @@ echo "$cmp" | sed 's/^/    2 ranks: /'
 check "rotated 30 deg on 2 ranks: the serial cloud at 0.6 (ids, positions within 1e-10)" \
     "i == 1 and p <= 1e-10 and n > 500" i="$(echo "$cmp" | awk '$1=="ids"{print $3}')" \
     p="$(echo "$cmp" | awk '$1=="positions"{print $2}')" n="$(echo "$cmp" | awk '$1=="count"{print $2}')"
+
+# The same on 3 ranks with frequent rebalances (lattice { maxImbalance
+# 1.01; }, loadBalance.sh): the stream enters and leaves while the lattice's
+# owners follow the points; the cloud at 0.6 is still the serial one
+r3="$SCRATCH/rotatedRebalanced"
+cp -r "$r" "$r3"
+rm -rf "$r3"/0.[0-9]* "$r3"/[1-9]* "$r3"/postProcessing "$r3"/processor*
+sed -i 's/^lattice .*{ *spacing \([0-9.]*\); *}/lattice { spacing \1; maxImbalance 1.01; }/' "$(props "$r3")"
+grep -q "maxImbalance 1.01" "$(props "$r3")" || { echo "FAIL: rotated, maxImbalance not set"; failures=$((failures + 1)); }
+decomposeCase "$r3" 3 scotch
+(cd "$r3" && mpirun -np 3 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1) \
+    || { echo "FAIL: rotated, 3 ranks"; tail -20 "$r3/log.mpmFoam"; failures=$((failures + 1)); }
+nb=$(grep -c "^MPM load balance at time" "$r3/log.mpmFoam")
+cmp=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$r" "$r3" 0.6 --fields U)
+echo "$cmp" | sed 's/^/    3 ranks, rebalanced: /'
+check "rotated 30 deg on 3 ranks, the lattice partitioned by points $nb times: the serial cloud at 0.6 (ids, positions within 1e-10)" \
+    "i == 1 and p <= 1e-10 and n > 500 and nb >= 3" i="$(echo "$cmp" | awk '$1=="ids"{print $3}')" \
+    p="$(echo "$cmp" | awk '$1=="positions"{print $2}')" n="$(echo "$cmp" | awk '$1=="count"{print $2}')" nb="$nb"
 
 # 3. Bad input: the top patch (off the lattice's sides, h = 0.019) joined by
 #    a side of the channel, which leaves its own patch and walls entry

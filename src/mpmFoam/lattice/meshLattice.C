@@ -355,25 +355,15 @@ void Foam::meshLattice::decomposeOwn()
             << "No lattice cell centre lies in a cell of the mesh: the lattice"
             << " spacing " << lattice_.h << " is too coarse" << exit(FatalError);
     }
-    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
     for (label f = 0; f < front.size(); ++f)
     {
         const label lin = front[f];
-        const label r[3] = {lin % n0, (lin/n0) % n1, lin/(n0*n1)};
-        for (direction a = 0; a < 3; ++a)
+        forEachFaceNeighbour(lin, [&](label nb)
         {
-            if (!lattice_.solved[a]) continue;
-            for (const label s : {-1, 1})
-            {
-                label q[3] = {r[0], r[1], r[2]};
-                q[a] += s;
-                if (q[a] < 0 || q[a] >= lattice_.nCells[a]) continue;
-                const label nb = lattice_.cellIndex(q[0], q[1], q[2]);
-                if (latticeOwner_[nb] >= 0) continue;
-                latticeOwner_[nb] = latticeOwner_[lin];
-                front.append(nb);
-            }
-        }
+            if (latticeOwner_[nb] >= 0) return;
+            latticeOwner_[nb] = latticeOwner_[lin];
+            front.append(nb);
+        });
     }
     meshOwner_ = latticeOwner_;
     labelList count(Pstream::nProcs(), Zero);
@@ -592,12 +582,25 @@ void Foam::meshLattice::buildOverlaps() const
         // to a hair off 1 (OpenFOAM decomposes about the face centre); what
         // moves between the two sides is conserved either way (the same
         // weights)
+        // A lattice plane through a face of the cell cuts off round-off
+        // slivers (1e-17 of it) of the lattice cell beyond: they are
+        // dropped and the rest scaled to the same sum, so a cell whose
+        // faces lie on lattice planes overlaps its own lattice cells only
+        // (a neighbour's velocity would otherwise show in a massless
+        // cell's mass-weighted U.solid)
         const scalar V = mesh_.cellVolumes()[celli];
+        scalar all = 0, kept = 0;
+        for (const auto& o : overlap)
+        {
+            all += o.second;
+            if (o.second > sliver*V) kept += o.second;
+        }
         weightStart_[celli] = cells.size();
         for (const auto& o : overlap)
         {
+            if (o.second <= sliver*V) continue;
             cells.append(o.first);
-            fractions.append(o.second/V);
+            fractions.append(o.second/V*(all/kept));
         }
     }
     weightStart_[nCells] = cells.size();

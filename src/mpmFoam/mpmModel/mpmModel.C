@@ -191,19 +191,37 @@ std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
     return sd;
 }
 
-bool Foam::mpmModel::rebalance(bool force)
+bool Foam::mpmModel::rebalance(bool start)
 {
     if (!Pstream::parRun() || lattice_.cellsAreNodes() || !balance_.enabled()) return false;
     const label n = label(system_.particles().size());
     const scalar before = latticeBalance::imbalance(n);
-    if (!force && before <= balance_.maxImbalance()) return false;
+    // The start within 1.05 keeps its owners: a new partition would move
+    // points for nothing (scotch's split need not be the mesh's)
+    const scalar most = start ? min(startImbalance, balance_.maxImbalance()) : balance_.maxImbalance();
+    if (before <= most)
+    {
+        if (start)
+        {
+            Info<< "MPM load balance at time " << mesh_.time().timeName()
+                << ": points per processor max/mean " << before << " -> " << before
+                << "; within " << most << ": the owners that follow the mesh kept" << nl;
+        }
+        return false;
+    }
     const clockTime timer;
     labelList owners(balance_.owners(lattice_, system_.particles(), lattice_.meshOwners()));
     label cellsMoved = 0;
     forAll(owners, c) cellsMoved += owners[c] != lattice_.latticeOwners()[c];
-    lattice_.setOwners(std::move(owners));
-    system_.changeSubdomain(decompose(walls_));
-    const label pointsMoved = toLatticeOwners(lattice_, system_.particles());
+    // The same owners (the points cannot be split finer): nothing to make
+    // again
+    label pointsMoved = 0;
+    if (cellsMoved)
+    {
+        lattice_.setOwners(std::move(owners));
+        system_.changeSubdomain(decompose(walls_));
+        pointsMoved = toLatticeOwners(lattice_, system_.particles());
+    }
     const scalar after = latticeBalance::imbalance(label(system_.particles().size()));
     const scalar cost = returnReduce(timer.elapsedTime(), maxOp<scalar>());
     balanceTime_ += cost;
@@ -212,7 +230,7 @@ bool Foam::mpmModel::rebalance(bool force)
         << ": points per processor max/mean " << before << " -> " << after
         << "; moved " << pointsMoved << " points and " << cellsMoved
         << " lattice cells; " << cost << " s" << nl;
-    return true;
+    return cellsMoved > 0;
 }
 
 void Foam::mpmModel::reportBalance(Ostream& os) const
@@ -652,7 +670,7 @@ void Foam::mpmModel::summary
     if (rebalances_ > 0)
     {
         line("load balance ", balance);
-        os  << "        (" << rebalances_ << " partitions by points, the start's included)" << nl;
+        os  << "        (" << rebalances_ << " partitions by points)" << nl;
     }
     line("I/O          ", io);
     for (const auto& e : named) line(e.first(), e.second());

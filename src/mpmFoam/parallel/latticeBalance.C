@@ -77,24 +77,14 @@ Foam::labelList Foam::latticeBalance::owners
             centres[a] = lattice.cellCentre(active[a]);
         }
         graph.setSize(active.size());
-        const label n0 = L.nCells[0], n1 = L.nCells[1];
         forAll(active, a)
         {
-            const label c = active[a];
-            const label r[3] = {c % n0, (c/n0) % n1, c/(n0*n1)};
             DynamicList<label> nbrs;
-            for (direction d = 0; d < 3; ++d)
+            lattice.forEachFaceNeighbour(active[a], [&](label c)
             {
-                if (!L.solved[d]) continue;
-                for (const label s : {-1, 1})
-                {
-                    label q[3] = {r[0], r[1], r[2]};
-                    q[d] += s;
-                    if (q[d] < 0 || q[d] >= L.nCells[d]) continue;
-                    const label b = index.lookup(label(L.cellIndex(q[0], q[1], q[2])), -1);
-                    if (b >= 0) nbrs.append(b);
-                }
-            }
+                const label b = index.lookup(c, -1);
+                if (b >= 0) nbrs.append(b);
+            });
             graph[a].transfer(nbrs);
         }
     }
@@ -152,28 +142,18 @@ Foam::labelList Foam::latticeBalance::owners
             set[active[a]] = true;
             front.append(active[a]);
         }
-        const label n0 = L.nCells[0], n1 = L.nCells[1];
         for (label layer = 0; layer < layers_; ++layer)
         {
             DynamicList<label> next;
             for (const label c : front)
             {
-                const label r[3] = {c % n0, (c/n0) % n1, c/(n0*n1)};
-                for (direction d = 0; d < 3; ++d)
+                lattice.forEachFaceNeighbour(c, [&](label b)
                 {
-                    if (!L.solved[d]) continue;
-                    for (const label s : {-1, 1})
-                    {
-                        label q[3] = {r[0], r[1], r[2]};
-                        q[d] += s;
-                        if (q[d] < 0 || q[d] >= L.nCells[d]) continue;
-                        const label b = label(L.cellIndex(q[0], q[1], q[2]));
-                        if (set[b]) continue;
-                        set[b] = true;
-                        owner[b] = owner[c];
-                        next.append(b);
-                    }
-                }
+                    if (set[b]) return;
+                    set[b] = true;
+                    owner[b] = owner[c];
+                    next.append(b);
+                });
             }
             front.transfer(next);
         }
