@@ -36,6 +36,7 @@ export OMP_NUM_THREADS=1
 prepare()
 {
     cp -r "$CASES/block3D" "$1"
+    followMesh "$1"
     echo "pointOutput $2;" >> "$1/constant/mpmProperties"
     runApps "$1" blockMesh mpmSetParticles \
         || { echo "FAIL: setting up $1"; failures=$((failures + 1)); }
@@ -195,6 +196,7 @@ within "continuing from the last complete checkpoint equals the uninterrupted ru
 
 echo "=== coupled (underwater granular collapse)"
 coupled=$(copyTutorial multiphase/underwaterGranularCollapse coupled)
+followMesh "$coupled"
 sed -i "s/^endTime .*/endTime 0.04;/; s/^writeInterval .*/writeInterval 0.02;/; s/^writePrecision .*/writePrecision 17;/" "$coupled/system/controlDict"
 grep -q "^writePrecision" "$coupled/system/controlDict" || echo "writePrecision 17;" >> "$coupled/system/controlDict"
 sed -i 's/tolerance 1e-10; relTol 0.01;/tolerance 1e-14; relTol 0;/; s/tolerance 1e-10; relTol 0;/tolerance 1e-14; relTol 0;/' "$coupled/system/fvSolution"

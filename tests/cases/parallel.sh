@@ -35,6 +35,7 @@ tol=1e-10
 prepare()
 {
     cp -r "$CASES/$1" "$2"
+    followMesh "$2"
     runApps "$2" blockMesh mpmSetParticles \
         || { echo "FAIL: setting up $1"; failures=$((failures + 1)); }
 }
@@ -163,6 +164,7 @@ parity "re-decomposed restart vs serial" "$serial" "$rebal" "$tEnd"
 
 seeded="$SCRATCH/block3D.seedParallel"
 cp -r "$CASES/block3D" "$seeded"
+followMesh "$seeded"
 runApps "$seeded" blockMesh
 decomposeCase "$seeded" 3 scotch
 (cd "$seeded" && mpirun -np 3 mpmSetParticles -parallel > log.mpmSetParticles 2>&1) \

@@ -25,6 +25,7 @@ tEnd=0.05
 setup()
 {
     local c; c=$(copyTutorial multiphase/underwaterGranularCollapse "$(basename "$1")")
+    followMesh "$c"
     sed -i "s/^endTime .*/endTime $tEnd;/; s/^writeInterval .*/writeInterval $tEnd;/; s/^writePrecision .*/writePrecision 17;/" "$c/system/controlDict"
     grep -q "^writePrecision" "$c/system/controlDict" || echo "writePrecision 17;" >> "$c/system/controlDict"
     if [ "$2" = tight ]; then
@@ -81,6 +82,7 @@ check "the serial/parallel difference follows the pressure solver's tolerance (l
 # processorCyclic patch, where the solid flux must take the interior rule.
 per="$SCRATCH/periodicSerial"; perP="$SCRATCH/periodicParallel"
 cp -r "$MPMFOAM_ROOT/tests/cases/periodicSuspensionCase" "$per"
+followMesh "$per"
 sed -i 's/tolerance *1e-[0-9]*; *relTol *[0-9.]*;/tolerance 1e-14; relTol 0;/g' "$per/system/fvSolution"
 sed -i 's/^writePrecision .*/writePrecision  17;/' "$per/system/controlDict"
 runApps "$per" blockMesh mpmSetParticles \

@@ -31,11 +31,13 @@ setup()
     local c="$SCRATCH/$1"
     if [ "$2" = pure ]; then
         cp -r "$MPMFOAM_ROOT/tests/cases/parallelCases/block3D" "$c"
+        followMesh "$c"
         # the block seeded on the floor, moving into it: stress from the
         # first step (in the air, as in the original, it has none by 0.02)
         sed -i 's/min (0.15 0.2 0.3); max (0.55 0.6 0.7)/min (0.15 0.2 0); max (0.55 0.6 0.4)/' "$c/system/mpmSetParticlesDict"
     else
         c=$(copyTutorial multiphase/underwaterGranularCollapse "$1")
+        followMesh "$c"
         sed -i 's/tolerance 1e-10; relTol 0.01;/tolerance 1e-14; relTol 0;/; s/tolerance 1e-10; relTol 0;/tolerance 1e-14; relTol 0;/' "$c/system/fvSolution"
     fi
     foamDictionary -entry endTime -set 0.02 "$c/system/controlDict" > /dev/null

@@ -14,7 +14,7 @@ void Foam::foamMaterialPoints::read(mpm::Particles& points)
     readMaterialPoints(mesh_, points, materialNames_);
     // Written per processor's mesh cells; run per lattice owner, which on
     // a lattice of its own need not be the same processor
-    if (!lattice_.cellsAreNodes()) toLatticeOwners(lattice_, points);
+    if (!lattice_.ownersAreMeshRanks()) toLatticeOwners(lattice_, points);
 }
 
 void Foam::foamMaterialPoints::write(const mpm::Particles& points)

@@ -362,7 +362,7 @@ void Foam::hdf5MaterialPoints::read(mpm::Particles& P)
         Info<< "No HDF5 checkpoint at time " << runTime.timeName()
             << ": reading the lagrangian cloud" << nl;
         readMaterialPoints(mesh_, P, materialNames_);
-        if (!lattice_.cellsAreNodes()) toLatticeOwners(lattice_, P);
+        if (!lattice_.ownersAreMeshRanks()) toLatticeOwners(lattice_, P);
         readCloud_ = true;
         return;
     }

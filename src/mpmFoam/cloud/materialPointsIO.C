@@ -186,7 +186,7 @@ void Foam::writeMaterialPoints
     // Decomposed on a lattice of its own, a point is on the processor of its
     // lattice cell: the cloud is written per processor's mesh cells, so a
     // copy of the points goes there first (meshCellSearch.H)
-    const bool move = Pstream::parRun() && !ml.cellsAreNodes();
+    const bool move = Pstream::parRun() && !ml.ownersAreMeshRanks();
     mpm::Particles moved;
     if (move)
     {

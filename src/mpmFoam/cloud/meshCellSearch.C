@@ -133,20 +133,8 @@ Foam::label Foam::toMeshCellRanks(const fvMesh& mesh, mpm::Particles& P)
 Foam::label Foam::toLatticeOwners(const meshLattice& lattice, mpm::Particles& P)
 {
     if (!Pstream::parRun()) return 0;
+    // Decomposed, every lattice holds its owners' table
     const mpm::Lattice& L = lattice.lattice();
-    // A lattice of its own holds its owners' table; a uniform box's
-    // lattice cells are its ranks' mesh cells: each rank marks its own
-    labelList boxOwner;
-    if (lattice.cellsAreNodes())
-    {
-        boxOwner.setSize(label(L.nCells[0])*L.nCells[1]*L.nCells[2], -1);
-        for (const auto& r : lattice.ownedLatticeCells())
-        {
-            boxOwner[L.cellIndex(r[0], r[1], r[2])] = Pstream::myProcNo();
-        }
-        Pstream::listCombineGather(boxOwner, maxEqOp<label>());
-        Pstream::listCombineScatter(boxOwner);
-    }
     labelList dest(P.size());
     forAll(dest, p)
     {
@@ -154,7 +142,7 @@ Foam::label Foam::toLatticeOwners(const meshLattice& lattice, mpm::Particles& P)
         label ijk[3];
         lattice.indicesOf(x, ijk);
         const label lin(L.cellIndex(ijk[0], ijk[1], ijk[2]));
-        dest[p] = lattice.cellsAreNodes() ? boxOwner[lin] : lattice.latticeCellOwner(lin);
+        dest[p] = lattice.latticeCellOwner(lin);
         if (dest[p] < 0)
         {
             FatalErrorInFunction

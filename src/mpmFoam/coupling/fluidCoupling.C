@@ -220,9 +220,19 @@ void Foam::fluidCoupling::cellsToLattice
         return;
     }
     const labelList& node = mpm_.lattice().cellNode();
+    // Decomposed, a cell's node may be another rank's (a balance by
+    // points): its copy goes to the owner (the only value it receives),
+    // and the owners' values to every copy
+    if (Pstream::parRun()) for (auto& a : out) std::fill(a.begin(), a.end(), 0.0);
     forAll(node, celli)
     {
         for (int k = 0; k < 3; ++k) out[k][node[celli]] = f[celli][k];
+    }
+    if (Pstream::parRun())
+    {
+        mpm::MpmSystem& s = mpm_.system();
+        s.sumToOwners({out[0].data(), out[1].data(), out[2].data()});
+        s.copyToHalo({out[0].data(), out[1].data(), out[2].data()});
     }
 }
 
@@ -404,6 +414,14 @@ void Foam::fluidCoupling::termsToLattice()
         });
         return;
     }
+    // Decomposed, a cell's node may be another rank's (a balance by
+    // points): cellsToLattice's transfer
+    std::vector<mpm::Real*> all
+    {
+        c.K.data(), c.U[0].data(), c.U[1].data(), c.U[2].data(),
+        c.F[0].data(), c.F[1].data(), c.F[2].data()
+    };
+    if (Pstream::parRun()) for (mpm::Real* a : all) std::fill(a, a + c.K.size(), 0.0);
     forAll(node, celli)
     {
         const label I = node[celli];
@@ -414,6 +432,12 @@ void Foam::fluidCoupling::termsToLattice()
             c.U[k][I] = K > 0 ? terms_.KU[celli][k]/K : U[celli][k];
             c.F[k][I] = terms_.F[celli][k];
         }
+    }
+    if (Pstream::parRun())
+    {
+        mpm::MpmSystem& s = mpm_.system();
+        s.sumToOwners(all);
+        s.copyToHalo(all);
     }
 }
 
@@ -474,7 +498,7 @@ void Foam::fluidCoupling::advanceSolids(scalar dt)
         const labelList& node = mpm_.lattice().cellNode();
         // A cell may overlap a halo copy that no point of this rank reached:
         // the owners' integrals, on every copy
-        if (overlaps_)
+        if (overlaps_ || Pstream::parRun())
         {
             s.copyToHalo({c.velocityIntegral[0].data(), c.velocityIntegral[1].data(), c.velocityIntegral[2].data()});
         }

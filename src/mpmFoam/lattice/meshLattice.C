@@ -425,11 +425,26 @@ void Foam::meshLattice::buildFromCells(const vector& h0)
         FatalErrorInFunction << e.what() << exit(FatalError);
     }
     mapCellCentres();
+    if (Pstream::parRun())
+    {
+        // The owners that follow the mesh: each cell's rank, the first
+        // table of a balance by points (latticeBalance)
+        latticeOwner_.setSize(label(lattice_.nRealNodes), -1);
+        forAll(cellIjk_, celli)
+        {
+            const auto& r = cellIjk_[celli];
+            latticeOwner_[lattice_.cellIndex(r[0], r[1], r[2])] = Pstream::myProcNo();
+        }
+        Pstream::listCombineGather(latticeOwner_, maxEqOp<label>());
+        Pstream::listCombineScatter(latticeOwner_);
+        meshOwner_ = latticeOwner_;
+    }
 }
 
 std::vector<std::array<int, 3>> Foam::meshLattice::ownedLatticeCells() const
 {
-    if (cellsAreNodes_) return cellIjk_;
+    // A uniform box's own cells, in cell order, while its owners follow it
+    if (cellsAreNodes_ && ownersFollowMesh_) return cellIjk_;
     std::vector<std::array<int, 3>> mine;
     for (int k = 0; k < lattice_.nCells[2]; ++k)
     for (int j = 0; j < lattice_.nCells[1]; ++j)
@@ -651,6 +666,8 @@ void Foam::meshLattice::localiseOverlaps() const
 
 std::vector<std::array<int, 3>> Foam::meshLattice::overlappedCells() const
 {
+    // A uniform box's cells are their lattice cells
+    if (cellsAreNodes_) return cellIjk_;
     if (weightStart_.empty()) buildOverlaps();
     labelList lin(weightCell_);
     Foam::sort(lin);
@@ -668,6 +685,7 @@ void Foam::meshLattice::setOwners(labelList&& owners)
 {
     latticeOwner_.transfer(owners);
     localised_ = false;
+    ownersFollowMesh_ = false;
 }
 
 Foam::label Foam::meshLattice::fvCellOf(const point& x) const
@@ -712,7 +730,7 @@ Foam::point Foam::meshLattice::cellCentre(label globalCell) const
 
 bool Foam::meshLattice::ownsLatticeCell(label globalCell) const
 {
-    if (cellsAreNodes_) return latticeCell_.found(globalCell);
+    if (cellsAreNodes_ && ownersFollowMesh_) return latticeCell_.found(globalCell);
     return latticeCellOwner(globalCell) == Pstream::myProcNo();
 }
 

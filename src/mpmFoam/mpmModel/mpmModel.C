@@ -168,13 +168,13 @@ std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
     const int reach = mpm::MpmSystem::stencilReach(controls_.step.shape);
     try
     {
-        // Any other mesh: the box holds every lattice cell this rank's
-        // mesh cells overlap, owned here or not (the exchange halo)
+        // The box holds every lattice cell this rank's mesh cells overlap,
+        // owned here or not (the exchange halo)
         sd->build
         (
             lattice_.lattice(), lattice_.ownedLatticeCells(), reach,
             mpm::Boundary::periodicAxes(lattice_.lattice(), walls), comm_,
-            lattice_.cellsAreNodes() ? std::vector<std::array<int, 3>>() : lattice_.overlappedCells()
+            lattice_.overlappedCells()
         );
     }
     catch (const std::exception& e)
@@ -193,7 +193,7 @@ std::shared_ptr<const mpm::Subdomain> Foam::mpmModel::decompose
 
 bool Foam::mpmModel::rebalance(bool start)
 {
-    if (!Pstream::parRun() || lattice_.cellsAreNodes() || !balance_.enabled()) return false;
+    if (!Pstream::parRun() || !balance_.enabled()) return false;
     const label n = label(system_.particles().size());
     const scalar before = latticeBalance::imbalance(n);
     // The start within 1.05 keeps its owners: a new partition would move
