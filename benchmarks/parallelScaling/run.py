@@ -9,6 +9,9 @@ threads, 2 ranks x 2 threads, and 3 and 4 ranks (oversubscribed on a
            in slices along x (simple, N 1 1), so the points are balanced;
   block3DOwn  block3D on a lattice of its own (the same cells), balanced
            by points (latticeBalance), on 1 and 2 ranks;
+  slide    a block sliding from one end of the box to the other, on 2
+           ranks split across x, with and without the balance by points:
+           max/mean points per rank over time;
   coupled  the underwater granular column collapse tutorial at half its
            cell size (12 800 points in water, 200 x 100 cells), 40 fluid
            steps with their MPM sub-cycles, decomposed in slices along y.
@@ -70,6 +73,52 @@ def make_block3DOwn(d):
     make_block3D(d)
     with open(os.path.join(d, "constant/mpmProperties"), "a") as f:
         f.write("\nlattice { extent ((-1 -1 -1) (2 2 2)); }\n")
+
+
+def make_slide(d):
+    """A block that slides from one end of the box to the other: 0.2 m of
+    the 1 m box's x at 2.5 m/s, 0.32 s (the far side by the end), no
+    gravity, on slip sides (the scene that defeats a static split)."""
+    make_block3D(d)
+    sub = [("system/mpmSetParticlesDict", r"min \([^)]*\); max \([^)]*\);",
+            "min (0.0 0.2 0.2); max (0.2 0.8 0.8);"),
+           ("system/mpmSetParticlesDict", r"value \([^)]*\);", "value (2.5 0 0);"),
+           ("system/controlDict", r"endTime 0.09;", "endTime 0.32;"),
+           ("constant/mpmProperties", r"floor \{[^}]*\}", "floor { type slip; }"),
+           ("constant/g", r"\([^)]*\)", "(0 0 0)")]
+    for f, a, b in sub:
+        p = os.path.join(d, f)
+        s = open(p).read()
+        s2 = re.sub(a, b, s, count=1)
+        assert s2 != s, (f, a)
+        open(p, "w").write(s2)
+    sh("rm -rf 0/lagrangian && mpmSetParticles", d)
+
+
+def run_slide(base):
+    """The slide on 2 ranks split across x (simple), the lattice's owners
+    following the mesh (balance none) and balanced by points: max/mean
+    points per rank over time, and the step loop's time."""
+    rows = {}
+    for balance in ("none", "scotch"):
+        d = base + "." + balance
+        shutil.copytree(base, d)
+        with open(os.path.join(d, "constant/mpmProperties"), "a") as f:
+            f.write("\nlattice { balance %s; }\n" % balance)
+        decompose(d, 2, 0)
+        log = sh("mpirun -np 2 mpmFoam -parallel", d, dict(os.environ, OMP_NUM_THREADS="1"))
+        imb = [float(b)/float(a) for a, b in
+               re.findall(r"points per processor min \d+, mean ([0-9.e+]+), max (\d+)", log)]
+        rows[balance] = (summary(log), imb)
+    print("\nslide: %d points, %d MPM steps, 2 ranks split across x" % (
+        rows["none"][0]["points"], rows["none"][0]["steps"]))
+    print("max/mean points per rank every logInterval (10 steps):")
+    for balance, (t, imb) in rows.items():
+        print("  balance %-6s %s" % (balance, " ".join("%.2f" % x for x in imb)))
+    for balance, (t, imb) in rows.items():
+        print("  balance %-6s loop %.3f s, mean max/mean %.3f, %d partitions (%.1f %% of the loop)" % (
+            balance, t["loop"], sum(imb)/len(imb), t["rebalances"],
+            100*t["balance"]/t["loop"] if t["loop"] else 0))
 
 
 def make_coupled(d):
@@ -152,7 +201,7 @@ def run_scene(name, base, cores, axis, configs=CONFIGS):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--scenes", nargs="*", default=["block3D", "block3DOwn", "coupled"])
+    ap.add_argument("--scenes", nargs="*", default=["block3D", "block3DOwn", "coupled", "slide"])
     ap.add_argument("--keep", action="store_true")
     args = ap.parse_args()
     cores = os.cpu_count()
@@ -166,7 +215,11 @@ def main():
     try:
         for scene in args.scenes:
             base = os.path.join(work, scene)
-            {"block3D": make_block3D, "block3DOwn": make_block3DOwn, "coupled": make_coupled}[scene](base)
+            {"block3D": make_block3D, "block3DOwn": make_block3DOwn, "coupled": make_coupled,
+             "slide": make_slide}[scene](base)
+            if scene == "slide":
+                run_slide(base)
+                continue
             run_scene(scene, base, cores, {"block3D": 0, "block3DOwn": 0, "coupled": 1}[scene],
                       CONFIGS[:2] if scene == "block3DOwn" else CONFIGS)
     finally:
