@@ -19,7 +19,7 @@
 #   3. An inlet partly beyond the extent: the rate kept, nothing beyond.
 #   4. Bad input: an extent outside the mesh, extentWall without extent,
 #      an inlet extentWall, a friction extentWall without its coefficient,
-#      a seeding region beyond the extent.
+#      a seeding region beyond the extent, an unknown balance, maxImbalance 1.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -163,5 +163,9 @@ v=$(unrunCopy frictionNoMu); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) 
 expectFailure "a friction extentWall without its coefficient" "Missing keyword frictionCoefficient for the friction extentWall" runIn "$v" mpmFoam
 v=$(unrunCopy region); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (0.9 1.1 2)); }/' "$(props "$v")"
 expectFailure "a seeding region beyond the extent" "enlarge the mesh \(or the MPM lattice's extent" runIn "$v" mpmSetParticles
+v=$(unrunCopy badBalance); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); balance metis; }/' "$(props "$v")"
+expectFailure "an unknown balance, in a serial run too" "Valid balance choices: scotch none" runIn "$v" mpmFoam
+v=$(unrunCopy lowImbalance); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); maxImbalance 1; }/' "$(props "$v")"
+expectFailure "maxImbalance 1 (max/mean is never below 1)" "Keyword maxImbalance = 1 is out of range \(1, " runIn "$v" mpmFoam
 
 finish

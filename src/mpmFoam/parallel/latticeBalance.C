@@ -4,20 +4,29 @@
 #include "HashTable.H"
 #include <algorithm>
 
+namespace
+{
+
+const char* balanceName(bool byPoints) { return byPoints ? "scotch" : "none"; }
+
+bool parseBalance(const std::string& s, bool& byPoints)
+{
+    for (const bool b : {true, false})
+    {
+        if (s == balanceName(b)) { byPoints = b; return true; }
+    }
+    return false;
+}
+
+} // namespace
+
 Foam::latticeBalance::latticeBalance(const dictionary& ld)
 {
-    if (!Pstream::parRun()) return;
-    Info<< "MPM load balance (the lattice's owners by points):" << nl;
-    const word method(ld.getOrDefault<word>("balance", "scotch"));
-    if (method != "scotch" && method != "none")
-    {
-        FatalIOErrorInFunction(ld)
-            << "Unknown balance '" << method << "'" << nl
-            << "Valid balance choices: scotch none" << exit(FatalIOError);
-    }
-    enabled_ = method == "scotch";
-    Info<< "    balance " << method << (ld.found("balance") ? "" : " (default)") << nl;
-    maxImbalance_ = readBounded(ld, "maxImbalance", 1.1, numberRange{1, GREAT, false, true});
+    // Read (strictly) in serial runs too, echoed where it acts
+    const bool echo = Pstream::parRun();
+    if (echo) Info<< "MPM load balance (the lattice's owners by points):" << nl;
+    enabled_ = readChoice(ld, "balance", parseBalance, balanceName, "scotch none", true, echo);
+    maxImbalance_ = readBounded(ld, "maxImbalance", 1.1, numberRange{1, GREAT, false, true}, echo);
 }
 
 Foam::scalar Foam::latticeBalance::imbalance(label nPoints)
