@@ -326,10 +326,13 @@ void Subdomain::build
         if (isCanonical && ownerOfCell(globalCellId(img)) == me) ownerSide_[l] = 1;
     }
     // The step's halo: the copies the stencils reach. The exchange's: those
-    // and the extra cells (the same lists when there are none).
+    // and the extra cells, the same lists unless an extra cell lies beyond
+    // the stencils' reach (collective: every rank builds the exchange's
+    // lists if any has such a cell)
     step_ = haloOf(near);
-    // (collective: every rank builds the exchange's lists if any has extras)
-    exchangeIsStep_ = comm.max(std::int64_t(extra.size())) == 0;
+    std::int64_t beyond = 0;
+    for (const auto& c : extra) beyond += !near[localNode(c[0], c[1], c[2])];
+    exchangeIsStep_ = comm.max(beyond) == 0;
     if (!exchangeIsStep_)
     {
         for (const auto& c : extra) near[localNode(c[0], c[1], c[2])] = 1;

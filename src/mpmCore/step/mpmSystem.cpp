@@ -37,19 +37,9 @@ void MpmSystem::setup
     }
     domain_ = lattice;
     domain_.finalise();
-    subdomain_ = std::move(subdomain);
-    if (subdomain_)
-    {
-        const Subdomain& sd = *subdomain_;
-        lattice_ = sd.local();
-        boundary_.build(domain_, spec, lattice_, sd.offset(), [&sd](Index c) { return sd.ownsCell(c); });
-    }
-    else
-    {
-        lattice_ = domain_;
-        boundary_.build(lattice_, spec);
-    }
     options_ = options;
+    subdomain_ = std::move(subdomain);
+    buildNodes(spec);
     plan_ = makeStepPlan(options_);
     p2gRows_ = P2gRowChoice(options_.p2gRowLoop);
     removedCount_.assign(spec.conditions.size(), 0);
@@ -59,9 +49,6 @@ void MpmSystem::setup
     levelSet_ = LevelSetWalls();
     // Gravity along unsolved directions has nothing to act on.
     for (int a = 0; a < 3; ++a) if (!lattice_.solved[a]) options_.gravity[a] = 0;
-    grid_.resize(lattice_.nNodes);
-    region_ = ActiveRegion();
-    region_.setDense(!options_.sparseGrid);
     // Available (checked above): the device mirror, sized by the first step
     if (options_.backend != Backend::cuda) device_.reset();
 #ifdef MPM_HAVE_CUDA
@@ -80,17 +67,30 @@ void MpmSystem::setup
     lastResident_ = false;
 }
 
+void MpmSystem::buildNodes(const BoundarySpec& spec)
+{
+    if (subdomain_)
+    {
+        const Subdomain& sd = *subdomain_;
+        lattice_ = sd.local();
+        boundary_.build(domain_, spec, lattice_, sd.offset(), [&sd](Index c) { return sd.ownsCell(c); });
+    }
+    else
+    {
+        lattice_ = domain_;
+        boundary_.build(lattice_, spec);
+    }
+    grid_.resize(lattice_.nNodes);
+    region_ = ActiveRegion();
+    region_.setDense(!options_.sparseGrid);
+}
+
 void MpmSystem::changeSubdomain(std::shared_ptr<const Subdomain> subdomain)
 {
     pullPoints();
     const BoundarySpec spec = boundary_.spec();
     subdomain_ = std::move(subdomain);
-    const Subdomain& sd = *subdomain_;
-    lattice_ = sd.local();
-    boundary_.build(domain_, spec, lattice_, sd.offset(), [&sd](Index c) { return sd.ownsCell(c); });
-    grid_.resize(lattice_.nNodes);
-    region_ = ActiveRegion();
-    region_.setDense(!options_.sparseGrid);
+    buildNodes(spec);
     levelSet_.relocate(lattice_);
     levelSetChanged_ = true;
     if (!coupling_.K.empty()) coupling_.resize(lattice_.nNodes);

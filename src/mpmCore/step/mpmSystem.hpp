@@ -332,6 +332,10 @@ private:
     // values back to the copies (after the fill, before G2P). Decomposed:
     // the Subdomain's halo across ranks; serial: the periodic copies.
     void sumHalo(unsigned what);
+    // The arrays' lattice (the domain, or subdomain_'s box) with its
+    // boundary, and the node arrays and active region sized on it (setup,
+    // changeSubdomain)
+    void buildNodes(const BoundarySpec& spec);
     void sumHalo(const std::vector<Real*>& arrays, Subdomain::HaloKind kind = Subdomain::HaloKind::step);
     void copyHalo(const std::vector<Real*>& arrays, Subdomain::HaloKind kind = Subdomain::HaloKind::step) const;
     // Stops every rank with the same message when any point went non-finite

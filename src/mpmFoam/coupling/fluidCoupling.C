@@ -43,6 +43,25 @@ bool parseResponse(const std::string& s, Foam::fluidCoupling::fluidResponse& r)
     return false;
 }
 
+// A uniform box's cells write node arrays at their own nodes (each node by
+// one cell at most, write()); decomposed, a cell's node may be another
+// rank's (a balance by points): the arrays are zero elsewhere, so the sum
+// into the owners moves each value there, and the copy sends the owners'
+// values to every copy
+template<class Write>
+void writeAtOwners
+(
+    mpm::MpmSystem& s, const std::vector<mpm::Real*>& arrays, std::size_t n, Write&& write
+)
+{
+    const bool moved = Foam::Pstream::parRun();
+    if (moved) for (mpm::Real* a : arrays) std::fill(a, a + n, 0.0);
+    write();
+    if (!moved) return;
+    s.sumToOwners(arrays);
+    s.copyToHalo(arrays);
+}
+
 } // namespace
 
 Foam::fluidCoupling::fluidCoupling(const fvMesh& mesh, mpmModel& mpm, fluidPhase& fluid)
@@ -220,20 +239,13 @@ void Foam::fluidCoupling::cellsToLattice
         return;
     }
     const labelList& node = mpm_.lattice().cellNode();
-    // Decomposed, a cell's node may be another rank's (a balance by
-    // points): its copy goes to the owner (the only value it receives),
-    // and the owners' values to every copy
-    if (Pstream::parRun()) for (auto& a : out) std::fill(a.begin(), a.end(), 0.0);
-    forAll(node, celli)
+    writeAtOwners(mpm_.system(), {out[0].data(), out[1].data(), out[2].data()}, out[0].size(), [&]
     {
-        for (int k = 0; k < 3; ++k) out[k][node[celli]] = f[celli][k];
-    }
-    if (Pstream::parRun())
-    {
-        mpm::MpmSystem& s = mpm_.system();
-        s.sumToOwners({out[0].data(), out[1].data(), out[2].data()});
-        s.copyToHalo({out[0].data(), out[1].data(), out[2].data()});
-    }
+        forAll(node, celli)
+        {
+            for (int k = 0; k < 3; ++k) out[k][node[celli]] = f[celli][k];
+        }
+    });
 }
 
 void Foam::fluidCoupling::cellsToNodes
@@ -414,31 +426,25 @@ void Foam::fluidCoupling::termsToLattice()
         });
         return;
     }
-    // Decomposed, a cell's node may be another rank's (a balance by
-    // points): cellsToLattice's transfer
-    std::vector<mpm::Real*> all
+    const std::vector<mpm::Real*> all
     {
         c.K.data(), c.U[0].data(), c.U[1].data(), c.U[2].data(),
         c.F[0].data(), c.F[1].data(), c.F[2].data()
     };
-    if (Pstream::parRun()) for (mpm::Real* a : all) std::fill(a, a + c.K.size(), 0.0);
-    forAll(node, celli)
+    writeAtOwners(mpm_.system(), all, c.K.size(), [&]
     {
-        const label I = node[celli];
-        const scalar K = terms_.K[celli];
-        c.K[I] = K;
-        for (int k = 0; k < 3; ++k)
+        forAll(node, celli)
         {
-            c.U[k][I] = K > 0 ? terms_.KU[celli][k]/K : U[celli][k];
-            c.F[k][I] = terms_.F[celli][k];
+            const label I = node[celli];
+            const scalar K = terms_.K[celli];
+            c.K[I] = K;
+            for (int k = 0; k < 3; ++k)
+            {
+                c.U[k][I] = K > 0 ? terms_.KU[celli][k]/K : U[celli][k];
+                c.F[k][I] = terms_.F[celli][k];
+            }
         }
-    }
-    if (Pstream::parRun())
-    {
-        mpm::MpmSystem& s = mpm_.system();
-        s.sumToOwners(all);
-        s.copyToHalo(all);
-    }
+    });
 }
 
 void Foam::fluidCoupling::advanceSolids(scalar dt)

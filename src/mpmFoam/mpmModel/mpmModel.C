@@ -47,7 +47,6 @@ Foam::mpmModel::mpmModel(const fvMesh& mesh)
     wordList conditionPatch;
     std::vector<mpm::LevelSetWall> patchWalls;
     const mpm::BoundarySpec walls(readWallConditions(mesh, lattice_, dict_, conditionPatch, patchWalls));
-    walls_ = walls;
     system_.setup(lattice_.lattice(), walls, controls_.step, decompose(walls));
     setLevelSetWalls(std::move(patchWalls));
     for (label m = 0; m < materials_.size(); ++m)
@@ -219,7 +218,7 @@ bool Foam::mpmModel::rebalance(bool start)
     if (cellsMoved)
     {
         lattice_.setOwners(std::move(owners));
-        system_.changeSubdomain(decompose(walls_));
+        system_.changeSubdomain(decompose(system_.boundary().spec()));
         pointsMoved = toLatticeOwners(lattice_, system_.particles());
     }
     const scalar after = latticeBalance::imbalance(label(system_.particles().size()));
