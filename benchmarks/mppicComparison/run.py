@@ -1,6 +1,12 @@
 #!/usr/bin/env python3
 """Cost per fluid step: mpmFoam (MPM grains + volume-averaged fluid) against
-OpenFOAM's MPPICFoam on the same fluidised-bed scene, in one run.
+OpenFOAM's MPPIC solvers on the same scene, in one run.
+
+Two scenes (--scene):
+  bed  (default) the fluidised bed below, against MPPICFoam;
+  vof  a block of the same grains released on the free surface of water in a
+       tank open to the air (vof/mpmCase with fluidModel VOF, vof/mppicCase),
+       against MPPICInterFoam: README.md, "The VOF scene".
 
 Both cases (mpmCase/, mppicCase/) share the mesh (20 x 60 x 4 uniform 5 mm
 hexes), the gas, the grains (0.5 mm glass, Gidaspow drag), the bed (0.1 m
@@ -26,8 +32,8 @@ which the "Time =" lines arrive. Every solver runs on one core
 within each round and the median over the rounds is reported.
 
 Usage (after `source etc/bashrc`):
-    benchmarks/mppicComparison/run.sh [--steps 100] [--deltaT 5e-4]
-        [--rounds 3] [--warmup 5] [--keep]
+    benchmarks/mppicComparison/run.sh [--scene bed|vof] [--steps 100]
+        [--deltaT 5e-4] [--rounds 3] [--warmup 5] [--timeout 600] [--keep]
 """
 import argparse
 import filecmp
@@ -39,10 +45,25 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.environ.get("MPMFOAM_DIR", os.path.abspath(os.path.join(HERE, "..", "..")))
+
+# Each scene: its two case folders, the MPPIC solver, the box mpmSetParticles
+# seeds (for makePositions.py), the files that must be identical in both
+# cases, and whether alpha.water is set with setFields.
+SCENES = {
+    "bed": {"mpm": "mpmCase", "mppic": "mppicCase", "solver": "MPPICFoam",
+            "box": ("0 0 0", "0.1 0.1 0.02"), "same": ["system/blockMeshDict"],
+            "setFields": False},
+    "vof": {"mpm": "vof/mpmCase", "mppic": "vof/mppicCase", "solver": "MPPICInterFoam",
+            "box": ("0.02 0.15 0", "0.08 0.21 0.02"),
+            "same": ["system/blockMeshDict", "system/fvSolution", "system/setFieldsDict",
+                     "0/alpha.water.orig", "0/U", "0/p_rgh"],
+            "setFields": True},
+}
 
 VARIANTS = {
     # name: (base case, {mpmProperties entry: value})
@@ -89,21 +110,26 @@ def load():
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
-def prepare(tmp, steps, dt):
-    """Builds the mpm and mppic base cases in tmp; returns their paths."""
+def prepare(tmp, scene, steps, dt):
+    """Builds the mpm and mppic base cases of a scene in tmp; returns their paths."""
     mpm = os.path.join(tmp, "mpm")
     mppic = os.path.join(tmp, "mppic")
-    shutil.copytree(os.path.join(HERE, "mpmCase"), mpm)
-    shutil.copytree(os.path.join(HERE, "mppicCase"), mppic)
-    if not filecmp.cmp(os.path.join(mpm, "system", "blockMeshDict"),
-                       os.path.join(mppic, "system", "blockMeshDict"), shallow=False):
-        sys.exit("run.py: mpmCase and mppicCase have different blockMeshDicts")
+    shutil.copytree(os.path.join(HERE, scene["mpm"]), mpm)
+    shutil.copytree(os.path.join(HERE, scene["mppic"]), mppic)
+    for f in scene["same"]:
+        if not filecmp.cmp(os.path.join(mpm, f), os.path.join(mppic, f), shallow=False):
+            sys.exit(f"run.py: the two cases have different {f}")
     for c in (mpm, mppic):
         set_entry(c, "system/controlDict", "deltaT", f"{dt:.10g}")
         set_entry(c, "system/controlDict", "endTime", f"{steps*dt:.10g}")
         sh(["blockMesh"], c, "log.blockMesh")
+        if scene["setFields"]:
+            shutil.copy(os.path.join(c, "0", "alpha.water.orig"), os.path.join(c, "0", "alpha.water"))
+            sh(["setFields"], c, "log.setFields")
     sh(["mpmSetParticles"], mpm, "log.mpmSetParticles")
-    sh([sys.executable, os.path.join(HERE, "makePositions.py"), ".", "--check",
+    lo, hi = scene["box"]
+    sh([sys.executable, os.path.join(HERE, "makePositions.py"), ".",
+        "--min", *lo.split(), "--max", *hi.split(), "--check",
         os.path.join(mpm, "0", "lagrangian", "materialPoints", "positions")],
        mppic, "log.makePositions")
     cells = [re.search(r"nCells:\s*(\d+)", open(os.path.join(c, "log.blockMesh")).read()).group(1)
@@ -112,19 +138,23 @@ def prepare(tmp, steps, dt):
         open(os.path.join(mppic, "log.makePositions")).read().strip()
 
 
-def run_case(base, workdir, name, edits, steps, warmup):
-    """Runs one solver on a fresh copy of base; returns the measurements."""
+def run_case(base, workdir, name, edits, steps, warmup, mppic_solver, timeout):
+    """Runs one solver on a fresh copy of base; returns the measurements. A
+    run that takes longer than timeout seconds is stopped and counts as failed
+    (an MPPIC parcel tracking that never ends has been seen: README.md)."""
     case = os.path.join(workdir, name)
     shutil.copytree(base, case)
     for entry, value in edits.items():
         set_entry(case, "constant/mpmProperties", entry, value)
-    solver = "MPPICFoam" if name.startswith("mppic") else "mpmFoam"
+    solver = mppic_solver if name.startswith("mppic") else "mpmFoam"
     env = dict(os.environ, OMP_NUM_THREADS="1")
     stamps, exec_t, subcycles, lines = [], [], [], []
     t0 = time.perf_counter()
     with open(os.path.join(case, "log." + solver), "w") as log:
         p = subprocess.Popen([solver], cwd=case, env=env, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True, bufsize=1)
+        watchdog = threading.Timer(timeout, p.kill)
+        watchdog.start()
         for line in p.stdout:
             now = time.perf_counter()
             log.write(line)
@@ -136,16 +166,25 @@ def run_case(base, workdir, name, edits, steps, warmup):
             elif line.startswith("MPM: ") and "sub-cycles" in line:
                 subcycles.append(int(line.split()[1]))
         rc = p.wait()
+        timed_out = not watchdog.is_alive()
+        watchdog.cancel()
     wall_total = time.perf_counter() - t0
     text = "".join(lines)
+    # mpmFoam's VOF line "alpha.water in [lo, hi]"; MPPICInterFoam's
+    # "Max(alpha.water) = hi"
+    amax = [float(x) for x in re.findall(r"alpha\.water in \[[^,]*, ([-0-9.eE+]+)\]", text)] \
+        + [float(x) for x in re.findall(r"Max\(alpha\.water\) = ([-0-9.eE+]+)", text)]
     r = {"name": name, "rc": rc, "wallTotal": wall_total, "case": case}
     if rc != 0 or len(stamps) != steps or len(exec_t) != steps:
         r["ok"] = False
         m = re.search(r"(FOAM FATAL.*?\n.*?\n)", text, re.S)
         r["error"] = m.group(1).strip() if m else f"rc {rc}, {len(stamps)} of {steps} steps"
+        if timed_out:
+            r["error"] = f"stopped after {timeout} s in step {len(stamps)} of {steps}"
         return r
     n = steps - 1 - warmup     # steps warmup+1 .. steps-1
     r["ok"] = True
+    r["alphaMax"] = max(amax) if amax else float("nan")
     r["cpu"] = 1e3*(exec_t[steps - 2] - exec_t[warmup - 1])/n
     r["wall"] = 1e3*(stamps[steps - 1] - stamps[warmup])/n
     if subcycles:
@@ -168,31 +207,35 @@ def run_case(base, workdir, name, edits, steps, warmup):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--scene", choices=sorted(SCENES), default="bed",
+                    help="bed: fluidised bed vs MPPICFoam; vof: grains into water vs MPPICInterFoam")
     ap.add_argument("--steps", type=int, default=100, help="fluid steps per run")
     ap.add_argument("--deltaT", type=float, default=5e-4, help="fluid step [s]")
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--warmup", type=int, default=5, help="fluid steps left out at the start")
+    ap.add_argument("--timeout", type=float, default=600, help="seconds per run at most")
     ap.add_argument("--keep", action="store_true", help="keep the scratch folder")
     a = ap.parse_args()
     if a.warmup < 1 or a.steps < a.warmup + 3:
         sys.exit("run.py: need --warmup >= 1 and --steps >= warmup + 3")
 
+    scene = SCENES[a.scene]
     cpu, cores, commit = machine()
     print(f"date: {time.strftime('%Y-%m-%dT%H:%M:%S')}")
     print(f"cpu: {cpu}\ncores: {cores}\nsystem: {platform.system()} {platform.release()}")
     print(f"mpmFoam commit: {commit}")
-    for exe in ("mpmFoam", "MPPICFoam"):
+    for exe in ("mpmFoam", scene["solver"]):
         path = shutil.which(exe) or "?"
         stamp = time.strftime("%Y-%m-%d %H:%M", time.localtime(os.path.getmtime(path))) \
             if path != "?" else "?"
         print(f"{exe}: {path} (built {stamp})")
     print(f"load average (1, 5, 15 min) at start: {load()}")
-    print(f"scene: {a.steps} fluid steps of {a.deltaT:g} s, {a.rounds} rounds, "
+    print(f"scene {a.scene}: {a.steps} fluid steps of {a.deltaT:g} s, {a.rounds} rounds, "
           f"steps {a.warmup + 1}..{a.steps - 1} timed, OMP_NUM_THREADS=1", flush=True)
 
     tmp = tempfile.mkdtemp(prefix="mppicComparison.")
     t_start = time.perf_counter()
-    bases, cells_mpm, cells_mppic, pos_log = prepare(tmp, a.steps, a.deltaT)
+    bases, cells_mpm, cells_mppic, pos_log = prepare(tmp, scene, a.steps, a.deltaT)
     print(f"mesh: {cells_mpm} cells (mpmCase), {cells_mppic} cells (mppicCase)")
     print(pos_log.replace("\n", "\n"), flush=True)
 
@@ -203,7 +246,7 @@ def main():
         for name in seq:
             base, edits = VARIANTS[name]
             r = run_case(bases[base], os.path.join(tmp, f"round{rnd}"), name, edits,
-                         a.steps, a.warmup)
+                         a.steps, a.warmup, scene["solver"], a.timeout)
             results[name].append(r)
             if r["ok"]:
                 sub = f", {r['sub'][1]:.3g} MPM steps/fluid step" if r["sub"] else ""
@@ -217,7 +260,7 @@ def main():
     print(f"benchmark wall time: {time.perf_counter() - t_start:.0f} s\n")
     ref = results["mppic"]
     hdr = ("| solver | MPM steps per fluid step | particles | CPU ms/fluid step "
-           "| wall ms/fluid step | ratio to MPPICFoam (CPU) | ratio (wall) |")
+           f"| wall ms/fluid step | ratio to {scene['solver']} (CPU) | ratio (wall) |")
     print(hdr)
     print("|" + "---|"*7)
     for name in order:
@@ -253,7 +296,11 @@ def main():
                   f"{m:.1f} ms")
     ends = [r.get("particlesEnd") for r in results["mppic"] if r["ok"]]
     if ends:
-        print(f"MPPICFoam parcels at the end: {ends}")
+        print(f"{scene['solver']} parcels at the end: {ends}")
+    if a.scene == "vof":
+        print("largest alpha.water over each run (1 where the water is bounded): "
+              + ", ".join(f"{name} {max(r['alphaMax'] for r in results[name] if r['ok']):.4g}"
+                          for name in order if any(r["ok"] for r in results[name])))
 
     if a.keep:
         print(f"\ncases kept in {tmp}")
