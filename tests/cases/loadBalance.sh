@@ -11,6 +11,8 @@
 #      happen during the run; the start is balanced (max/mean <= 1.05);
 #      count, id sum and mass checksum exact on every logged step.
 #      The 3-rank run restarted after rebalances: the serial positions.
+#      Seeded after decomposePar (mpmSetParticles -parallel) on 3 ranks:
+#      balanced at the start, the serial positions.
 #   2. The same on 3 ranks with lattice { balance none; }: the owners
 #      follow the mesh, so the start is out of balance (the contrast).
 #   3. Coupled (the graded settling column, a lattice of its own) on 3
@@ -91,6 +93,22 @@ read -r nb start <<< "$(rebalances "$p3/log.restart")"
 read -r d nt <<< "$(samePositions "$s" "$p3")"
 check "3 ranks restarted at t = 1 after rebalances (balanced again, max/mean $start; $nb rebalances after): positions equal the serial run's at $nt written times (max difference $d)" \
     "d <= 1e-10 and nt >= 4 and start <= 1.05" d="$d" nt="$nt" start="$start"
+
+# Seeded after decomposePar (mpmSetParticles -parallel, the other order
+# issue 27 names): on 3 ranks (scotch) balanced at the start, and the serial
+# run's positions (time 0 included: the seeding itself)
+ps=$(copyTutorial mpm/elasticDisks seededParallel)
+cp "$s/system/controlDict" "$ps/system/"
+cp "$(props "$s")" "$(props "$ps")"
+runApps "$ps" blockMesh > /dev/null || { echo "FAIL: seededParallel blockMesh"; failures=$((failures + 1)); }
+decomposeCase "$ps" 3 scotch ""
+(cd "$ps" && mpirun -np 3 --oversubscribe mpmSetParticles -parallel > log.mpmSetParticles 2>&1 \
+    && mpirun -np 3 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar -withZero > log.reconstructPar 2>&1) \
+    || { echo "FAIL: mpmSetParticles -parallel, then mpmFoam on 3 ranks"; tail -30 "$ps"/log.*; failures=$((failures + 1)); }
+read -r nb start <<< "$(rebalances "$ps/log.mpmFoam")"
+read -r d nt <<< "$(samePositions "$s" "$ps")"
+check "seeded by mpmSetParticles -parallel on 3 ranks: balanced at the start (max/mean $start), $nb rebalances, positions equal the serial run's at $nt written times (max difference $d)" \
+    "start <= 1.05 and d <= 1e-10 and nt >= 4" start="$start" d="$d" nt="$nt"
 
 # --- 2. balance none: the owners follow the mesh --------------------------------
 p=$(onRanks none 3 scotch "" "balance none;")
