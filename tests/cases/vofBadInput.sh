@@ -28,7 +28,7 @@ expectFailure "unknown fluidModel: the choices" "Valid fluidModel choices: singl
 c=$(freshCopy unknownContinuity)
 sed -i 's/^\( *nLimiterIter .*\)/\1\n        alphaContinuity bounde;/' "$c/system/fvSolution"
 expectFailure "unknown alphaContinuity" "Unknown alphaContinuity 'bounde'; did you mean 'bounded'" runIn "$c" mpmFoam
-expectFailure "unknown alphaContinuity: the choices" "Valid alphaContinuity choices: conservative bounded" runIn "$c" mpmFoam
+expectFailure "unknown alphaContinuity: the choices" "Valid alphaContinuity choices: corrected conservative bounded" runIn "$c" mpmFoam
 
 c=$(freshCopy noAlphaWater)
 rm "$c/0/alpha.water"

@@ -9,17 +9,21 @@
 #include "subCycle.H"
 #include "uniformDimensionedFields.H"
 #include "choice.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
 
 namespace
 {
     const char* continuityName(Foam::vofFluid::alphaContinuity c)
     {
-        return c == Foam::vofFluid::alphaContinuity::bounded ? "bounded" : "conservative";
+        using ac = Foam::vofFluid::alphaContinuity;
+        return c == ac::bounded ? "bounded" : c == ac::conservative ? "conservative" : "corrected";
     }
 
     bool parseContinuity(const std::string& s, Foam::vofFluid::alphaContinuity& c)
     {
-        for (const auto v : {Foam::vofFluid::alphaContinuity::conservative, Foam::vofFluid::alphaContinuity::bounded})
+        using ac = Foam::vofFluid::alphaContinuity;
+        for (const auto v : {ac::corrected, ac::conservative, ac::bounded})
         {
             if (s == continuityName(v)) { c = v; return true; }
         }
@@ -248,7 +252,7 @@ Foam::vofFluid::vofFluid(fvMesh& mesh, const pimpleControl& pimple)
     mesh.setFluxRequired(alpha1_.name());
 
     const dictionary& ac = mesh.solverDict(alpha1_.name());
-    continuity_ = readChoice(ac, "alphaContinuity", parseContinuity, continuityName, "conservative bounded", alphaContinuity::conservative);
+    continuity_ = readChoice(ac, "alphaContinuity", parseContinuity, continuityName, "corrected conservative bounded", alphaContinuity::corrected);
     Info<< "    VOF: " << alpha1_.name() << " in (" << mixture_.phase1Name() << " "
         << mixture_.phase2Name() << "), rho " << mixture_.rho1().value() << " "
         << mixture_.rho2().value() << ", nu "
@@ -262,7 +266,16 @@ Foam::vofFluid::vofFluid(fvMesh& mesh, const pimpleControl& pimple)
         << ", nAlphaSubCycles " << ac.get<label>("nAlphaSubCycles")
         << ", cAlpha " << mixture_.cAlpha()
         << ", MULESCorr " << Switch(ac.getOrDefault<bool>("MULESCorr", false))
-        << " (fvSolution solvers " << alpha1_.name() << ")" << nl
+        << ", alphaContinuity " << continuityName(continuity_)
+        << " (fvSolution solvers " << alpha1_.name() << ")" << nl;
+    if (continuity_ == alphaContinuity::corrected)
+    {
+        mesh.setFluxRequired("pcorr");
+        Info<< "    alpha flux correction (where the grains change alpha.fluid): pcorr solved with "
+            << (pcorrFromPRgh() ? "p_rgh's final solver, relTol 0 (no 'pcorr' in fvSolution solvers)"
+                                : "fvSolution solvers 'pcorr'") << nl;
+    }
+    Info
         << (alphaRestart_ ? "    restarting alpha from the MULES flux\n" : "") << endl;
 }
 
@@ -504,6 +517,61 @@ void Foam::vofFluid::alphaEqn
     waterOut_ += returnReduce(out, sumOp<scalar>())*mesh.time().deltaTValue();
 }
 
+bool Foam::vofFluid::pcorrFromPRgh() const
+{
+    return !mesh_.solutionDict().subDict("solvers").found("pcorr");
+}
+
+void Foam::vofFluid::correctAlphaFlux()
+{
+    // The last pressure solve made aF_f phi satisfy the mixture's continuity
+    // with the grains' face flux, over the last step. The alpha1 transport
+    // needs it to carry this step's change of the projected aF instead:
+    // div(aF_f phi) = -d(aF)/dt in every cell, or alpha1 = 1 stops being a
+    // solution of its own equation (the residual R of alphaContinuity). As
+    // interFoam's correctPhi for a moving mesh: phi -= the flux of pcorr,
+    //     laplacian(aF_f, pcorr) = div(aF_f phi) + d(aF)/dt,
+    // pcorr fixed (0) where p_rgh is fixed, zero gradient elsewhere.
+    // Nothing to correct where aF did not change (no grains, or oneWay
+    // still ones): the solve is skipped, so a case without moving grains
+    // pays nothing.
+    const scalar change = gMax(mag(alpha_.primitiveField() - alpha_.oldTime().primitiveField())());
+    if (change == 0) return;
+
+    wordList pcorrTypes(p_rgh_.boundaryField().size(), zeroGradientFvPatchScalarField::typeName);
+    forAll(p_rgh_.boundaryField(), patchi)
+    {
+        if (p_rgh_.boundaryField()[patchi].fixesValue())
+        {
+            pcorrTypes[patchi] = fixedValueFvPatchScalarField::typeName;
+        }
+    }
+    volScalarField pcorr
+    (
+        IOobject("pcorr", mesh_.time().timeName(), mesh_, IOobject::NO_READ, IOobject::NO_WRITE, false),
+        mesh_,
+        dimensionedScalar(dimArea/dimTime, Zero),
+        pcorrTypes
+    );
+    const surfaceScalarField alphaf(fvc::interpolate(alpha_));
+    fvScalarMatrix pcorrEqn
+    (
+        fvm::laplacian(alphaf, pcorr) == fvc::div(alphaPhi_) + fvc::ddt(alpha_)
+    );
+    if (pcorr.needReference()) pcorrEqn.setReference(0, 0);
+    if (pcorrFromPRgh())
+    {
+        dictionary d(mesh_.solverDict(p_rgh_.select(true)));
+        d.set("relTol", scalar(0));
+        pcorrEqn.solve(d);
+    }
+    else
+    {
+        pcorrEqn.solve(mesh_.solverDict("pcorr"));
+    }
+    alphaPhi_ -= pcorrEqn.flux();
+}
+
 void Foam::vofFluid::solve(pimpleControl& pimple, const dimensionedVector&)
 {
     volVectorField& U = U_;
@@ -513,6 +581,8 @@ void Foam::vofFluid::solve(pimpleControl& pimple, const dimensionedVector&)
 
     while (pimple.loop())
     {
+        if (continuity_ == alphaContinuity::corrected) correctAlphaFlux();
+
         // --- alpha1, sub-cycled as interFoam's alphaEqnSubCycle.H, with
         // aF moving linearly over the sub-cycles
         {
