@@ -172,6 +172,7 @@ def run_case(base, workdir, name, edits, steps, warmup, mppic_solver, timeout):
     text = "".join(lines)
     # mpmFoam's VOF line "alpha.water in [lo, hi]"; MPPICInterFoam's
     # "Max(alpha.water) = hi"
+    bal = [abs(float(x)) for x in re.findall(r"balance \(V - V0 \+ out\)/V0 ([-0-9.eE+]+);", text)]
     amax = [float(x) for x in re.findall(r"alpha\.water in \[[^,]*, ([-0-9.eE+]+)\]", text)] \
         + [float(x) for x in re.findall(r"Max\(alpha\.water\) = ([-0-9.eE+]+)", text)]
     r = {"name": name, "rc": rc, "wallTotal": wall_total, "case": case}
@@ -185,6 +186,7 @@ def run_case(base, workdir, name, edits, steps, warmup, mppic_solver, timeout):
     n = steps - 1 - warmup     # steps warmup+1 .. steps-1
     r["ok"] = True
     r["alphaMax"] = max(amax) if amax else float("nan")
+    r["waterBalance"] = max(bal) if bal else None
     r["cpu"] = 1e3*(exec_t[steps - 2] - exec_t[warmup - 1])/n
     r["wall"] = 1e3*(stamps[steps - 1] - stamps[warmup])/n
     if subcycles:
@@ -301,6 +303,11 @@ def main():
         print("largest alpha.water over each run (1 where the water is bounded): "
               + ", ".join(f"{name} {max(r['alphaMax'] for r in results[name] if r['ok']):.4g}"
                           for name in order if any(r["ok"] for r in results[name])))
+        wb = [(name, max(r["waterBalance"] for r in results[name] if r["ok"]))
+              for name in order if any(r["ok"] and r.get("waterBalance") is not None for r in results[name])]
+        if wb:
+            print("mpmFoam's water balance |(V - V0 + out)/V0|, largest over each run: "
+                  + ", ".join(f"{n} {b:.2g}" for n, b in wb))
 
     if a.keep:
         print(f"\ncases kept in {tmp}")
