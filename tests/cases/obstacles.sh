@@ -14,6 +14,9 @@
 #     at 2 m/s from t = 0.1 s (velocity, a Function1 table): until then no
 #     point passes it, afterwards the sand flows out beneath it, and no
 #     point is ever inside the gate where it is at that time;
+#     the same on 3 ranks with the lattice rebalanced by points whenever
+#     max/mean exceeds 1.01 (the gate's level set moving with the owners):
+#     the serial positions at every written time (1e-10);
 #   * resting on a noSlip plane: an elastic block (elasticDisks' material,
 #     E = 1e5, cubic B-splines, APIC) dropped at 0.5 m/s on a noSlip plane
 #     obstacle at a cell face and 1/4 cell off one comes to rest with its
@@ -203,6 +206,22 @@ check "gate: the sand flows out beneath it once lifted (front $after m, the gate
 check "gate: no point inside the moving gate at any written time (deepest $inside m; the lift known to 1e-4 m)" "d < 1e-4" d="$inside"
 grep -q "moves with velocity table" "$gt/log.mpmFoam"
 check "gate: the log says the gate moves" "r == 0" r=$?
+
+# The moving gate decomposed (3 ranks, scotch) with the lattice rebalanced
+# whenever max/mean points per rank exceeds 1.01 (issue 27): the gate's
+# level set moves with the owners (LevelSetWalls::relocate), the points
+# as serial at every written time
+gp="$SCRATCH/gateBalanced"
+cp -r "$gt" "$gp"
+rm -rf "$gp"/0.[0-9]* "$gp"/[1-9]* "$gp"/log.mpmFoam
+echo "lattice { maxImbalance 1.01; }" >> "$(props "$gp")"
+decomposeCase "$gp" 3 scotch ""
+(cd "$gp" && mpirun -np 3 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1 && reconstructPar > log.reconstructPar 2>&1) \
+    || { echo "FAIL: the gate on 3 ranks"; tail -30 "$gp/log.mpmFoam"; failures=$((failures + 1)); }
+nb=$(grep -c "^MPM load balance at time" "$gp/log.mpmFoam")
+read -r d nt <<< "$(samePositions "$gt" "$gp")"
+check "gate on 3 ranks, rebalanced $((nb - 1)) times while it moves: positions equal the serial run's at $nt written times (max difference $d)" \
+    "nb >= 3 and d <= 1e-10 and nt >= 10" nb="$nb" d="${d:-1}" nt="${nt:-0}"
 
 # Bad input, each a message naming the obstacle
 seededCopy mpm/elasticDisks
