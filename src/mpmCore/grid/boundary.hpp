@@ -47,6 +47,17 @@ struct WallCondition
     WallType type = WallType::noSlip;
     Real frictionCoefficient = 0;   // Coulomb mu, for WallType::friction
     std::array<Real, 3> velocity{0, 0, 0};   // for WallType::inlet
+    // An outlet whose nodes are free but whose points are held as at a
+    // wall (MpmSystem::exitCondition): the lattice faces beyond a mesh that
+    // is not a box ("beyondMesh", src/mpmFoam/boundary/wallConditions.C).
+    // Only a point that went through a level-set wall, or through the
+    // corner where it meets a mirrored box wall, reaches such a face; held
+    // inside the box, the level-set containment then puts it back out of
+    // the wall (or books it on a level-set outlet). Let out there, a point
+    // sliding into the toe of a level-set slope on a mirrored floor left
+    // the domain (tutorials/multiphase/granularSlideWave,
+    // tests/cases/levelSetBoxCorner.sh).
+    bool holdsPoints = false;
 };
 
 // Which condition each boundary face has. Sides are x-, x+, y-, y+, z-, z+.

@@ -59,7 +59,10 @@ bool MpmSystem::leavesThroughFace(Index p, const Real x[3], Index& leaving, Inde
 }
 
 // Which faces the new position x lies beyond: an open one lets the point
-// out (the first such axis names the face), walls hold it.
+// out (the first such axis names the face), walls hold it, and so do the
+// open faces that hold points (WallCondition::holdsPoints: the faces beyond
+// a mesh, reached only through a level-set wall, whose containment, after
+// this, puts the point back on the material's side).
 int MpmSystem::exitCondition(const Real x[3], bool& beyondWall) const
 {
     const Lattice& L = domain_;
@@ -71,7 +74,8 @@ int MpmSystem::exitCondition(const Real x[3], bool& beyondWall) const
         const Real lo = L.origin[a], hi = lo + L.length(a);
         if (x[a] >= lo && x[a] < hi) continue;
         const int c = spec.conditionAtPosition(L, 2*a + (x[a] < lo ? 0 : 1), x);
-        if (isOpen(spec.conditions[c].type)) through = c;
+        const WallCondition& wc = spec.conditions[c];
+        if (isOpen(wc.type) && !wc.holdsPoints) through = c;
         else beyondWall = beyondWall || x[a] < lo || x[a] > hi;
     }
     return through;

@@ -124,7 +124,8 @@ void readPatchWalls
 // wall is parallel to the face (the image holds a bed beside it: free
 // nodes let a bed beside slip walls creep 0.47 mm in 0.01 s,
 // tests/cases/anyMesh.sh "pier bed"); free nodes beyond any other wall (an
-// outlet condition "beyondMesh"; the level-set wall itself removes or holds
+// outlet condition "beyondMesh" whose points are held, as at a wall:
+// WallCondition::holdsPoints; the level-set wall itself removes or holds
 // what would reach the face). A noSlip mirror there held a stream entering
 // through a level-set inlet in the last cell row, and a slip mirror on a box
 // side turns a stream along a tilted slip wall
@@ -149,6 +150,11 @@ void conditionsBeyondMesh
             index = label(spec.conditions.size());
             mpm::WallCondition c;
             c.type = type;
+            // Free nodes, but a point that reaches the face went through a
+            // level-set wall or the corner where it meets a mirrored side:
+            // held there, the level set puts it back (it left the domain at
+            // the toe of granularSlideWave's slope on its mirrored floor)
+            c.holdsPoints = true;
             spec.conditions.push_back(c);
             names.append("beyondMesh");
         }
