@@ -12,7 +12,7 @@
 #
 #  1. The bed's excess pore pressure u = p - p(y_ref) - rho_w g (y_ref - y)
 #     (y_ref = 0.114 m, in the water above the bed) equals the single
-#     fluid's at every write within 1e-3 gamma'H (measured 4.7e-4 with the
+#     fluid's at every write within 1e-3 gamma'H (measured 4.2e-4 with the
 #     default alphaContinuity corrected; conservative 2.8e-4, bounded
 #     4.7e-4): the air above changes nothing below the surface.
 #  2. It follows Terzaghi's series solution (plotConsolidation.py's, same
@@ -20,9 +20,9 @@
 #     0.04 <= T <= 1 (as consolidation.sh; measured 2.2 %, each form).
 #  3. At the end the skeleton carries the buoyant weight: the points'
 #     sigma'_yy = -gamma'(H - y) + u within 1.5 % of gamma'H (measured
-#     0.83 %; conservative 0.79 %, bounded 0.83 %).
+#     0.79 %; conservative 0.79 %, bounded 0.83 %).
 #  4. At rest: the pressure is hydrostatic, dp/dy = -rho g within 1e-5 of
-#     rho g in the water above the bed and in the air (measured 1.5e-6;
+#     rho g in the water above the bed and in the air (measured 6.8e-7;
 #     conservative 5.9e-7, bounded 1.6e-6); the spurious velocity above the
 #     bed is below 1e-5 m/s at the end (measured 2.2e-7 m/s, each form);
 #     the surface (alpha.water = 0.5) stays at 0.12 m within h/10.
