@@ -540,7 +540,12 @@ void Foam::vofFluid::correctAlphaFlux()
     // tutorials/multiphase/granularSlideWave before the slide touched it.
     // Nothing to correct where aF did not change (no grains, or oneWay
     // still ones): the solve is skipped, so a case without moving grains
-    // pays nothing.
+    // pays nothing. Not OpenFOAM's CorrectPhi itself: it needs 'pcorr'
+    // and 'pcorrFinal' solver entries, which VOF cases written before this
+    // correction do not have. Unlike it, this solves once, without
+    // PIMPLE's non-orthogonal correctors: on a non-orthogonal mesh the
+    // corrected flux carries aF's change only up to the explicit
+    // non-orthogonal part of the pcorr flux.
     const scalar change = gMax(mag(alpha_.primitiveField() - alpha_.oldTime().primitiveField())());
     if (change == 0) return;
 

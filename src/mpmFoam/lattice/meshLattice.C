@@ -636,11 +636,10 @@ void Foam::meshLattice::localiseOverlaps() const
     const mpm::Lattice& arrays = subdomain_ ? subdomain_->local() : lattice_;
     coverage_.assign(std::size_t(arrays.nNodes), 0.0);
     weightNode_.setSize(weightCell_.size());
-    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
     forAll(weightCell_, k)
     {
-        const label lin = weightCell_[k];
-        const label r[3] = {lin % n0, (lin/n0) % n1, lin/(n0*n1)};
+        label r[3];
+        cellIjk(weightCell_[k], r);
         const label I = subdomain_
           ? label(subdomain_->localNode(r[0], r[1], r[2]))
           : label(lattice_.realNode(r[0], r[1], r[2]));
@@ -672,11 +671,12 @@ std::vector<std::array<int, 3>> Foam::meshLattice::overlappedCells() const
     labelList lin(weightCell_);
     Foam::sort(lin);
     std::vector<std::array<int, 3>> out;
-    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
     forAll(lin, k)
     {
         if (k && lin[k] == lin[k - 1]) continue;
-        out.push_back({int(lin[k] % n0), int((lin[k]/n0) % n1), int(lin[k]/(n0*n1))});
+        label r[3];
+        cellIjk(lin[k], r);
+        out.push_back({int(r[0]), int(r[1]), int(r[2])});
     }
     return out;
 }
@@ -716,8 +716,8 @@ void Foam::meshLattice::attach(const std::shared_ptr<const mpm::Subdomain>& subd
 
 Foam::point Foam::meshLattice::cellCentre(label globalCell) const
 {
-    const label n0 = lattice_.nCells[0], n1 = lattice_.nCells[1];
-    const label r[3] = {globalCell % n0, (globalCell/n0) % n1, globalCell/(n0*n1)};
+    label r[3];
+    cellIjk(globalCell, r);
     point c;
     for (direction d = 0; d < 3; ++d)
     {

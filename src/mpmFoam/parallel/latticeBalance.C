@@ -153,7 +153,7 @@ Foam::labelList Foam::latticeBalance::owners
         }
         for (label layer = 0; layer < layers_; ++layer)
         {
-            DynamicList<label> next;
+            DynamicList<label> nextFront;
             for (const label c : front)
             {
                 lattice.forEachFaceNeighbour(c, [&](label b)
@@ -161,10 +161,10 @@ Foam::labelList Foam::latticeBalance::owners
                     if (set[b]) return;
                     set[b] = true;
                     owner[b] = owner[c];
-                    next.append(b);
+                    nextFront.append(b);
                 });
             }
-            front.transfer(next);
+            front.transfer(nextFront);
         }
     }
     Pstream::scatter(owner);
