@@ -35,12 +35,6 @@
 
 # grainVolume <case>: the largest |relative difference| of the logged
 # "Grain volume: cells ..., points ..." lines, and their count
-grainVolume()
-{
-    sed -n 's/^Grain volume: .*relative difference \(.*\)/\1/p' "$1/log.mpmFoam" \
-        | "$PY" -c "import sys; v = [abs(float(x)) for x in sys.stdin]; print(max(v) if v else 1, len(v))"
-}
-
 # --- packed bed ---------------------------------------------------------------
 declare -A drop grad
 for variant in uniform40 graded40; do
@@ -119,10 +113,7 @@ par=$(gradedSettling settlingParallel "$tEnd")
 decomposeCase "$par" 2 simple "n (1 2 1);"
 (cd "$par" && mpirun -np 2 --oversubscribe mpmFoam -parallel > log.mpmFoam 2>&1) \
     || { echo "FAIL: decomposed"; tail -30 "$par/log.mpmFoam"; failures=$((failures + 1)); }
-out=$("$PY" "$MPMFOAM_ROOT/etc/python/compareClouds.py" "$serial" "$par" "$tEnd" --fields U)
-echo "$out" | sed 's/^/    /'
-ids=$(echo "$out" | awk '$1=="ids"{print $3}')
-w=$(echo "$out" | awk 'NR>2{if($2>m)m=$2}END{print m+0}')
+read -r ids w <<< "$(cloudDiff "$serial" "$par" "$tEnd" U)"
 check "graded settling on 2 ranks: points within 1e-9 of serial ($w)" "i == 1 and w <= 1e-9" i="${ids:-0}" w="$w"
 (cd "$par" && reconstructPar -latestTime -fields '(U p alpha.solid)' > log.reconstructPar 2>&1) \
     || { echo "FAIL: reconstructPar"; failures=$((failures + 1)); }
