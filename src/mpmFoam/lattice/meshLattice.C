@@ -112,7 +112,7 @@ void Foam::meshLattice::build(const dictionary& mpmDict)
             << " or hierarchical)" << exit(FatalError);
     }
     const dictionary& ld = optionalSubDict(mpmDict, "lattice");
-    checkKeywords(ld, {"spacing", "extent", "extentWall", "balance", "maxImbalance"}, "lattice");
+    checkKeywords(ld, {"spacing", "extent", "extentWall", "balance", "maxImbalance", "migrationRatio"}, "lattice");
     vector h0(Zero);
     std::string notBox;
     const bool box = uniformBox(h0, notBox);

@@ -1,6 +1,6 @@
 #include "latticeBalance.H"
 #include "choice.H"
-#include "decompositionMethod.H"
+#include "scotchRepartition.H"
 #include "HashTable.H"
 #include <algorithm>
 
@@ -27,6 +27,7 @@ Foam::latticeBalance::latticeBalance(const dictionary& ld)
     if (echo) Info<< "MPM load balance (the lattice's owners by points):" << nl;
     enabled_ = readChoice(ld, "balance", parseBalance, balanceName, "scotch none", true, echo);
     maxImbalance_ = readBounded(ld, "maxImbalance", 1.1, numberRange{1, GREAT, false, true}, echo);
+    migrationRatio_ = readBounded(ld, "migrationRatio", 0.2, numberRange{0, 100, true, true}, echo);
 }
 
 Foam::scalar Foam::latticeBalance::imbalance(label nPoints)
@@ -62,12 +63,9 @@ Foam::labelList Foam::latticeBalance::owners
     Pstream::gatherList(cells);
     Pstream::gatherList(counts);
 
-    // The master holds the whole graph of the material's lattice cells;
-    // the others give none (the decomposition gathers it there anyway)
-    labelList active;
-    scalarField weight;
+    // The master holds the whole graph of the material's lattice cells
+    labelList active, weight, present;
     labelListList graph;
-    pointField centres;
     Map<label> index;
     if (Pstream::master())
     {
@@ -78,12 +76,12 @@ Foam::labelList Foam::latticeBalance::owners
         }
         active = total.sortedToc();
         weight.setSize(active.size());
-        centres.setSize(active.size());
+        present.setSize(active.size());
         forAll(active, a)
         {
             index.set(active[a], a);
             weight[a] = total[active[a]];
-            centres[a] = lattice.cellCentre(active[a]);
+            present[a] = lattice.latticeCellOwner(active[a]);
         }
         graph.setSize(active.size());
         forAll(active, a)
@@ -99,55 +97,25 @@ Foam::labelList Foam::latticeBalance::owners
     }
     if (returnReduce(active.size(), sumOp<label>()) == 0) return meshOwners;
 
-    dictionary decompDict;
-    decompDict.add("numberOfSubdomains", Pstream::nProcs());
-    decompDict.add("method", word("scotch"));
-    const labelList part = decompositionMethod::New(decompDict)->decompose(graph, centres, weight);
-
     labelList owner(meshOwners);
     if (Pstream::master())
     {
-        // Number the parts to keep the most points where they are: the
-        // largest overlaps of part and present owner first
-        const label np = Pstream::nProcs();
-        List<Tuple2<scalar, labelPair>> overlap;
-        {
-            scalarSquareMatrix kept(np, Zero);
-            forAll(active, a) kept(part[a], lattice.latticeCellOwner(active[a])) += weight[a];
-            for (label i = 0; i < np; ++i)
-            for (label j = 0; j < np; ++j)
-            {
-                if (kept(i, j) > 0) overlap.append(Tuple2<scalar, labelPair>(kept(i, j), labelPair(i, j)));
-            }
-        }
-        std::stable_sort
+        // Repartition from the present owners: moving a cell costs its
+        // points (times migrationRatio_) against 1 per cut face, so a drift
+        // moves the cells at the parts' edges, not half the material
+        const labelList part
         (
-            overlap.begin(), overlap.end(),
-            [](const Tuple2<scalar, labelPair>& x, const Tuple2<scalar, labelPair>& y) { return x.first() > y.first(); }
+            scotchRepartition
+            (
+                graph, weight, present, weight, migrationRatio_, Pstream::nProcs(), partBalance_
+            )
         );
-        labelList rankOf(np, -1);
-        boolList taken(np, false);
-        for (const auto& o : overlap)
-        {
-            const label i = o.second().first(), j = o.second().second();
-            if (rankOf[i] >= 0 || taken[j]) continue;
-            rankOf[i] = j;
-            taken[j] = true;
-        }
-        label next = 0;
-        forAll(rankOf, i)
-        {
-            if (rankOf[i] >= 0) continue;
-            while (taken[next]) ++next;
-            rankOf[i] = next;
-            taken[next] = true;
-        }
         // The material's cells, then layers around them breadth first
         boolList set(owner.size(), false);
         DynamicList<label> front;
         forAll(active, a)
         {
-            owner[active[a]] = rankOf[part[a]];
+            owner[active[a]] = part[a];
             set[active[a]] = true;
             front.append(active[a]);
         }
