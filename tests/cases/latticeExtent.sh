@@ -19,7 +19,8 @@
 #   3. An inlet partly beyond the extent: the rate kept, nothing beyond.
 #   4. Bad input: an extent outside the mesh, extentWall without extent,
 #      an inlet extentWall, a friction extentWall without its coefficient,
-#      a seeding region beyond the extent, an unknown balance, maxImbalance 1.
+#      a seeding region beyond the extent, an unknown balance, maxImbalance 1,
+#      a negative migrationRatio.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseTestFunctions"
 
@@ -167,5 +168,7 @@ v=$(unrunCopy badBalance); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1
 expectFailure "an unknown balance, in a serial run too" "Valid balance choices: scotch none" runIn "$v" mpmFoam
 v=$(unrunCopy lowImbalance); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); maxImbalance 1; }/' "$(props "$v")"
 expectFailure "maxImbalance 1 (max/mean is never below 1)" "Keyword maxImbalance = 1 is out of range \(1, " runIn "$v" mpmFoam
+v=$(unrunCopy negativeMigration); sed -i 's/^lattice .*/lattice { extent ((-1 -1 -1) (1.1 1.1 2)); migrationRatio -1; }/' "$(props "$v")"
+expectFailure "a negative migrationRatio" "Keyword migrationRatio = -1 is out of range \[0, 100\]" runIn "$v" mpmFoam
 
 finish
