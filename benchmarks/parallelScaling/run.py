@@ -12,13 +12,18 @@ threads, 2 ranks x 2 threads, and 3 and 4 ranks (oversubscribed on a
   slide    a block sliding from one end of the box to the other, on 2
            ranks split across x, with and without the balance by points:
            max/mean points per rank over time;
+  collapse3D  the 3D granular collapse tutorial (200 960 points), its first
+           0.03 s, balanced by points, on 1 and 2 ranks and 1 rank x 2
+           threads;
   coupled  the underwater granular column collapse tutorial at half its
            cell size (12 800 points in water, 200 x 100 cells), 40 fluid
            steps with their MPM sub-cycles, decomposed in slices along y.
 Times are the step loop's own (the cost summary each run prints: every
 phase's maximum over ranks; start-up and writing excluded), so ratios are
 taken within one run of this script on one machine. Prints a table and
-the share of each step spent in halo exchange and in migration.
+the share of each step spent in halo exchange and in migration. Each scene
+also runs two serial copies at once ("2x1"): two workers that never
+communicate, whose 2 t1/t is the most any 2-worker run can reach here.
 
     benchmarks/parallelScaling/run.sh [--scenes block3D coupled] [--keep]
 """
@@ -121,6 +126,23 @@ def run_slide(base):
             100*t["balance"]/t["loop"] if t["loop"] else 0))
 
 
+def make_collapse3D(d):
+    """The 3D granular collapse tutorial (200 960 points, quadratic B-splines,
+    Drucker-Prager), its first 0.03 s (about 110 steps), no writes: balanced
+    by points (latticeBalance) on 2 ranks."""
+    shutil.copytree(os.path.join(ROOT, "tutorials/mpm/granularCollapse3D"), d,
+                    ignore=shutil.ignore_patterns("[1-9]*", "0.*", "processor*", "log.*", "*.png",
+                                                  "sweep", "HDF5", "*.csv"))
+    p = os.path.join(d, "system/controlDict")
+    s = open(p).read()
+    for a, b in [(r"\nendTime .*", "\nendTime 0.03;"), (r"\nwriteInterval .*", "\nwriteInterval 100;")]:
+        s2 = re.sub(a, b, s)
+        assert s2 != s, a
+        s = s2
+    open(p, "w").write(s)
+    sh("blockMesh && mpmSetParticles", d)
+
+
 def make_coupled(d):
     shutil.copytree(os.path.join(ROOT, "tutorials/multiphase/underwaterGranularCollapse"), d,
                     ignore=shutil.ignore_patterns("[1-9]*", "0.*", "processor*", "log.*", "*.png"))
@@ -178,6 +200,16 @@ def run_scene(name, base, cores, axis, configs=CONFIGS):
         d = base + ".%dx%d" % (ranks, threads)
         shutil.copytree(base, d)
         env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+        if ranks == 0:
+            # two independent serial runs at once (no communication at all):
+            # what this machine gives two workers; the loop is the slower one's
+            shutil.copytree(base, d + "b")
+            procs = [subprocess.Popen("mpmFoam", cwd=c, shell=True, env=env, stdout=subprocess.PIPE,
+                                      stderr=subprocess.STDOUT, text=True) for c in (d, d + "b")]
+            logs = [p.communicate()[0] for p in procs]
+            t = [summary(l) for l in logs]
+            rows.append((ranks, threads, max(t, key=lambda x: x["loop"])))
+            continue
         if ranks == 1:
             log = sh("mpmFoam", d, env)
         else:
@@ -189,6 +221,13 @@ def run_scene(name, base, cores, axis, configs=CONFIGS):
     print("%-6s %-7s %-10s %-8s %-10s %-8s %-9s %-9s %s" % (
         "ranks", "threads", "loop [s]", "speedup", "efficiency", "halo %", "migr. %", "max/mean", "note"))
     for ranks, threads, t in rows:
+        if ranks == 0:
+            # 2 serial runs at once, each the whole work: the speed-up two
+            # workers could reach here is 2 t1/t
+            print("%-6s %-7d %-10.3f %-8.2f %-10.2f %-8s %-9s %-9s %s" % (
+                "2x1", threads, t["loop"], 2*t1/t["loop"], t1/t["loop"], "-", "-", "-",
+                "two serial runs at once: this machine's ceiling for 2 workers (2 t1/t)"))
+            continue
         used = ranks*threads
         note = "oversubscribed (%d processes on %d cores)" % (used, cores) if used > cores else ""
         print("%-6d %-7d %-10.3f %-8.2f %-10.2f %-8.1f %-9.1f %-9.2f %s" % (
@@ -201,7 +240,7 @@ def run_scene(name, base, cores, axis, configs=CONFIGS):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--scenes", nargs="*", default=["block3D", "block3DOwn", "coupled", "slide"])
+    ap.add_argument("--scenes", nargs="*", default=["block3D", "block3DOwn", "collapse3D", "coupled", "slide"])
     ap.add_argument("--keep", action="store_true")
     args = ap.parse_args()
     cores = os.cpu_count()
@@ -216,12 +255,14 @@ def main():
         for scene in args.scenes:
             base = os.path.join(work, scene)
             {"block3D": make_block3D, "block3DOwn": make_block3DOwn, "coupled": make_coupled,
-             "slide": make_slide}[scene](base)
+             "slide": make_slide, "collapse3D": make_collapse3D}[scene](base)
             if scene == "slide":
                 run_slide(base)
                 continue
-            run_scene(scene, base, cores, {"block3D": 0, "block3DOwn": 0, "coupled": 1}[scene],
-                      CONFIGS[:2] if scene == "block3DOwn" else CONFIGS)
+            configs = {"block3DOwn": CONFIGS[:2] + [(0, 1)],
+                       "collapse3D": CONFIGS[:3] + [(0, 1)]}.get(scene, CONFIGS + [(0, 1)])
+            run_scene(scene, base, cores, {"block3D": 0, "block3DOwn": 0, "coupled": 1, "collapse3D": 0}[scene],
+                      configs)
     finally:
         if args.keep:
             print("\ncases kept in", work)

@@ -31,6 +31,22 @@ def lube(a):
 
 
 BAND = 0.20     # the scatter band about the law (README, "Validation": assumed, not read off the paper)
+WINDOW = 1.25   # glass-bead experiments within a factor 1.25 of a run's a are its neighbours
+
+
+def glass_beads():
+    """Lajeunesse et al.'s glass-bead collapses, digitised (lajeunesseGlassBeads.csv: a, runout)."""
+    lines = [l for l in open(os.path.join(here, "lajeunesseGlassBeads.csv")) if not l.startswith("#")]
+    assert lines[0].strip() == "a,runout", lines[0]
+    data = np.array([[float(x) for x in l.split(",")] for l in lines[1:] if l.strip()])
+    return {"a": data[:, 0], "runout": data[:, 1]}
+
+
+def neighbours(beads, a):
+    """The experiments' runouts near a, each divided by Lube's law at its own a
+    (so that experiments at slightly different a compare): the ratios."""
+    near = np.abs(np.log(beads["a"]/a)) <= np.log(WINDOW)
+    return beads["runout"][near]/lube(beads["a"][near])
 
 
 def positions(path):
@@ -60,6 +76,7 @@ def measure(case):
                 runout_mean=(sectors.mean() - c["r0"])/c["r0"])
 
 
+beads = glass_beads()
 rows = [measure(c) for c in sys.argv[1:]]
 rows.sort(key=lambda d: (d["case"], d["a"]))
 print("%-34s %5s %6s %6s %6s %6s %7s %7s %7s %6s %7s %8s %11s %6s"
@@ -70,14 +87,34 @@ for d in rows:
     print("%-34s %5.2f %6.4f %6.3f %6.2f %6d %7.3f %7.3f %7.3f %6.3f %7.3f %8.4f %5.3f-%5.3f %6.3f"
           % (d["case"], d["a"], d["h"], d["r0"], d["t"], d["n"], d["rf"], d["runout"], d["lube"],
              d["ratio"], d["runout_mean"], d["dr_last"], d["smin"], d["smax"], d["Hf"]/d["h0"]))
+# The experiments' scatter: every runout between a = 0.3 and 4 divided by
+# Lube's law at its a, its median and the standard deviation of the logs
+inRange = (beads["a"] >= 0.3) & (beads["a"] <= 4)
+allRatios = beads["runout"][inRange]/lube(beads["a"][inRange])
+median, sigma = np.median(allRatios), np.std(np.log(allRatios), ddof=1)
+print("\nAgainst the glass-bead experiments (lajeunesseGlassBeads.csv, digitised), each runout"
+      " divided by Lube's law at its own a:")
+print("  all %d between a = 0.3 and 4: median %.3f, standard deviation of ln %.3f (a factor %.3f)"
+      % (len(allRatios), median, sigma, np.exp(sigma)))
+print("  z: ln(model/median)/sigma; the neighbours: the experiments within a factor %g of the run's a" % WINDOW)
+print("%-34s %5s %7s %6s %4s %13s %8s" % ("case", "a", "model", "z", "n", "neighbours", "median"))
+for d in rows:
+    r = neighbours(beads, d["a"])
+    d["beads_n"], d["beads_min"], d["beads_max"] = len(r), (r.min() if len(r) else np.nan), (r.max() if len(r) else np.nan)
+    d["beads_median"] = np.median(r) if len(r) else np.nan
+    d["beads_z"] = np.log(d["ratio"]/median)/sigma
+    print("%-34s %5.2f %7.3f %6.2f %4d %6.3f-%6.3f %8.3f"
+          % (d["case"], d["a"], d["ratio"], d["beads_z"], len(r), d["beads_min"], d["beads_max"], d["beads_median"]))
 
 csv = os.path.join(here, "runoutVsAspectRatio3D.csv")
 with open(csv, "w") as f:
-    f.write("case,a,h,r0,h0,t_end,points,r_f,runout,lube,ratio,runout_sector_mean,dr_last,sector_min,sector_max,Hf_over_h0\n")
+    f.write("case,a,h,r0,h0,t_end,points,r_f,runout,lube,ratio,runout_sector_mean,dr_last,sector_min,sector_max,Hf_over_h0,"
+            "beads_n,beads_min,beads_max,beads_median,beads_z\n")
     for d in rows:
-        f.write("%s,%g,%g,%.6g,%.6g,%g,%d,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n"
+        f.write("%s,%g,%g,%.6g,%.6g,%g,%d,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.5f,%.5f,%.5f,%.5f\n"
                 % (d["case"], d["a"], d["h"], d["r0"], d["h0"], d["t"], d["n"], d["rf"], d["runout"],
-                   d["lube"], d["ratio"], d["runout_mean"], d["dr_last"], d["smin"], d["smax"], d["Hf"]/d["h0"]))
+                   d["lube"], d["ratio"], d["runout_mean"], d["dr_last"], d["smin"], d["smax"], d["Hf"]/d["h0"],
+                   d["beads_n"], d["beads_min"], d["beads_max"], d["beads_median"], d["beads_z"]))
 print("Wrote %s" % csv)
 
 import matplotlib  # noqa: E402
@@ -89,11 +126,15 @@ aa = np.linspace(0.3, 4, 300)
 ax.plot(aa, lube(aa), "k-", label="Lube et al. (2004): 1.24 a, 1.6 a$^{1/2}$")
 ax.fill_between(aa, (1 - BAND)*lube(aa), (1 + BAND)*lube(aa), color="0.85",
                 label="$\\pm$%d %% about the law (scatter band, README)" % round(100*BAND))
+ax.plot(beads["a"], beads["runout"], "x", color="0.45", ms=5,
+        label="glass beads, Lajeunesse et al. (digitised, lajeunesseGlassBeads.csv)")
 def label(tag):
     """h0.02_mu0.577_floor0.45 -> 'h = 0.02 m, mu = 0.577 (30.0 deg), floor mu_w 0.45'"""
-    parts = dict(re.match(r"(h|mu|phi|floor)(.*)", p).groups() for p in tag.split("_"))
+    parts = dict(re.match(r"(h|muI|mu|phi|floor)(.*)", p).groups() for p in tag.split("_"))
     text = "h = %s m" % parts["h"]
-    if "phi" in parts:
+    if "muI" in parts:
+        text += ", mu(I), glass beads (muS = tan 22 deg)"
+    elif "phi" in parts:
         text += ", phi = %s deg" % parts["phi"]
     else:
         mu = float(parts.get("mu", 0.601))
