@@ -2,12 +2,10 @@
 // flow and its cost): the point work on the device with the CPU's kernel
 // bodies, the node work between the transfers the host's own phases.
 #include "launchers.hpp"
-#include "../phases/halo.hpp"
 #include "../phases/migrate.hpp"
 #include "../phases/movePoints.hpp"
 #include "../phases/nodalUpdate.hpp"
 #include "../phases/scatter.hpp"
-#include "../phases/walls.hpp"
 #include "../kernels/movePoint.hpp"
 #include <algorithm>
 #include <stdexcept>
@@ -104,7 +102,7 @@ void stepHostAssisted(SystemState& s, Real dt)
                 dev.p2g(L, shape, false, true, apic, invRho0, grainVolume);
                 dev.gridToHost(host, force, true);
                 break;
-            case Phase::foldForce: sumHalo(s, foldForce); foldGhosts(s, foldForce); break;
+            case Phase::foldForce: foldScatteredForce(s); break;
             case Phase::nodalUpdate: nodalUpdate(s, dt); break;
             case Phase::gather:
                 dev.gridFromHost(host, DeviceStep::gridVelocity | (apic ? 0u : unsigned(DeviceStep::gridVelocityOld)));

@@ -16,7 +16,7 @@ void mapToGrid(SystemState& s, std::vector<Real>* grainVolume)
     updateMassTolerance(s);
     auto& g = s.grid;
     binPoints(s);
-    scatter(s, {true, false, false});
+    scatterMassMomentum(s, false);
     if (grainVolume) grainVolume->assign(g.volume.begin(), g.volume.end());
     sumHalo(s, foldMass | foldMomentum);
     foldGhosts(s, foldMass);

@@ -148,6 +148,12 @@ void nodalAfterScatter(SystemState& s, Real dt, bool withForce)
     fillGhosts(s, s.grid.velocityOld);
 }
 
+void foldScatteredForce(SystemState& s)
+{
+    sumHalo(s, foldForce);
+    foldGhosts(s, foldForce);
+}
+
 void nodalAfterRemap(SystemState& s)
 {
     sumHalo(s, foldMomentum);

@@ -22,6 +22,10 @@ void massToVelocity(SystemState& s, std::array<std::vector<Real>, 3>& v);
 // the internal force too (USL, MUSL), so it is summed and folded here.
 void nodalAfterScatter(SystemState& s, Real dt, bool withForce);
 
+// USF: the internal force scattered after the stress update, summed over
+// the halo and folded from the ghosts
+void foldScatteredForce(SystemState& s);
+
 // (M + D) v = p + dt f: the new velocity, with the implicit drag and added
 // mass of the fluid coupling (step/fluidCoupling.hpp), friction and
 // level-set walls, the ghosts and halo; integrates v for the coupling

@@ -46,24 +46,26 @@ void scatterKernel(SystemState& s)
     });
 }
 
+// P2G. massMomentum: mass, volume and momentum; force: internal force;
+// velocityOnly: momentum only, from the (new) point velocities (MUSL).
 // The choices become template arguments so the node loop has no branches.
 template<class K, int D>
-void scatterAs(SystemState& s, ScatterWhat what)
+void scatterAs(SystemState& s, bool massMomentum, bool force, bool velocityOnly)
 {
     // A fresh P2G (massMomentum) always follows binPoints, which left every
     // grid array zero; the force scatter alone (USF) adds the internal
     // force to the gravity there; the MUSL re-map starts its momentum anew.
     auto& g = s.grid;
-    if (what.velocityOnly) s.region.zero({g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()});
+    if (velocityOnly) s.region.zero({g.momentum[0].data(), g.momentum[1].data(), g.momentum[2].data()});
     auto pick = [](bool x, auto&& k) { if (x) k(std::true_type{}); else k(std::false_type{}); };
     const bool apic = s.options.transfer == Transfer::apic;
     // Only the 3D P2G without APIC has the two loops to choose from
     const bool choice = D == 3 && !apic;
     const bool rows = choice ? s.p2gRows.rows(s.stepCount) : true;
     const auto t0 = std::chrono::steady_clock::now();
-    pick(what.massMomentum, [&](auto mm)
+    pick(massMomentum, [&](auto mm)
     {
-        pick(what.force, [&](auto f)
+        pick(force, [&](auto f)
         {
             pick(apic, [&](auto a)
             {
@@ -86,11 +88,18 @@ void scatterAs(SystemState& s, ScatterWhat what)
     }
 }
 
+void scatter(SystemState& s, bool massMomentum, bool force, bool velocityOnly)
+{
+    s.dispatch([&](auto k, auto d)
+    {
+        scatterAs<decltype(k), decltype(d)::value>(s, massMomentum, force, velocityOnly);
+    });
+}
+
 } // namespace
 
-void scatter(SystemState& s, ScatterWhat what)
-{
-    s.dispatch([&](auto k, auto d) { scatterAs<decltype(k), decltype(d)::value>(s, what); });
-}
+void scatterMassMomentum(SystemState& s, bool withForce) { scatter(s, true, withForce, false); }
+void scatterForce(SystemState& s) { scatter(s, false, true, false); }
+void remapMomentum(SystemState& s) { scatter(s, false, false, true); }
 
 } // namespace mpm

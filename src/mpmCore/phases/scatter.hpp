@@ -11,16 +11,12 @@ namespace mpm {
 // builds this step's active region, which leaves every grid array zero on it
 void binPoints(SystemState& s);
 
-// What one P2G scatters: massMomentum, mass, volume and momentum (a fresh
-// P2G: right after binPoints); force, the internal force (alone: added to
-// the gravity already there, USF); velocityOnly, the momentum anew from
-// the new point velocities (the MUSL re-map)
-struct ScatterWhat
-{
-    bool massMomentum = false;
-    bool force = false;
-    bool velocityOnly = false;
-};
-void scatter(SystemState& s, ScatterWhat what);
+// The fresh P2G of a step or map, right after binPoints: mass, volume and
+// momentum, and with withForce the internal force too (USL, MUSL)
+void scatterMassMomentum(SystemState& s, bool withForce);
+// USF: the internal force alone, added to the gravity already there
+void scatterForce(SystemState& s);
+// MUSL: the momentum anew, from the new point velocities
+void remapMomentum(SystemState& s);
 
 } // namespace mpm
