@@ -19,7 +19,7 @@
 // field's largest magnitude on the CPU.
 //
 // Why that tolerance: this executable compiles the step's host code
-// (step/mpmSystem.cpp) with -ffp-contract=off and the device step
+// (step/, phases/, launchers/) with -ffp-contract=off and the device step
 // (backend/deviceStep.cu) with -fmad=false (tests/CMakeLists.txt), so
 // neither side fuses multiply-adds and the only difference left is the
 // order of P2G's sums: the device's atomicAdd accumulates the points of a

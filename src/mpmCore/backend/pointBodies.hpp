@@ -58,7 +58,7 @@ struct Stress
 };
 
 // Shape function and number of solved directions as types, like
-// MpmSystem::dispatch
+// SystemState::dispatch
 template<class Fn>
 void dispatchKD(ShapeKind shape, int dim, Fn&& f)
 {

@@ -13,7 +13,7 @@
 //                              holding a double's bits, atomically
 //
 // The kernel bodies are the CPU step's (kernels/*.hpp); the node work that
-// the CPU step does over the boundary's node lists (MpmSystem's ghost
+// the CPU step does over the boundary's node lists (phases/walls.cpp's ghost
 // folds, contact, fills) is written here as bodies over the ghost list,
 // with Exec::add where ghosts share an image. The grid is dense: every
 // node, zeroed by one fill per step, so no active region is built. Phase
@@ -54,8 +54,8 @@ struct GhostView
 };
 
 // The friction walls' node work (kernels/frictionWall.hpp) grouped by node:
-// node[i]'s operations are [start[i], start[i+1]), in MpmSystem::
-// applyFriction's order (first-layer nodes, then the images' slides),
+// node[i]'s operations are [start[i], start[i+1]), in applyFriction's
+// (phases/walls.cpp) order (first-layer nodes, then the images' slides),
 // which a node's thread runs in turn
 struct FrictionView
 {
@@ -117,8 +117,8 @@ struct LumpedVelocity
     MPM_HOST_DEVICE void operator()(Index I) const { lumpedVelocityNode(g, v, tol, I); }
 };
 
-// The uncoupled lumped update v = (p + dt f)/m (MpmSystem::nodalUpdate with
-// solveMass)
+// The uncoupled lumped update v = (p + dt f)/m (nodalUpdate with solveMass,
+// phases/nodalUpdate.cpp)
 struct NodalUpdate
 {
     GridView g; Real dt; Real tol;
@@ -165,9 +165,9 @@ struct LevelSetNode
     MPM_HOST_DEVICE void operator()(Index I) const { levelSetWallNode(ls, mass, v, tol, I, muCap); }
 };
 
-// Ghost folds (MpmSystem::foldScalar, foldVector): every ghost added into
-// its image (with this step's signs for vectors), then, for scalars, the
-// image's sum copied back to the ghost
+// Ghost folds (phases/walls.hpp: foldScalar, foldVector): every ghost
+// added into its image (with this step's signs for vectors), then, for
+// scalars, the image's sum copied back to the ghost
 template<class Exec>
 struct FoldScalar
 {
@@ -200,7 +200,7 @@ struct FillGhosts
     }
 };
 
-// The serial halo of periodic axes (MpmSystem::sumHalo, copyHalo): each
+// The serial halo of periodic axes (phases/halo.hpp: sumHalo, copyHalo): each
 // periodic copy's values summed into its canonical node, or the canonical
 // node's copied back (the canonical node is never a copy)
 template<class Exec>
@@ -222,9 +222,9 @@ struct PeriodicCopy
     }
 };
 
-// The contact decision of unilateral walls (MpmSystem::decideWallContact),
-// in three launches: each image's own trial momentum, plus every ghost's,
-// then the signs
+// The contact decision of unilateral walls (decideWallContact,
+// phases/walls.hpp), in three launches: each image's own trial momentum,
+// plus every ghost's, then the signs
 struct ContactTrialImage
 {
     GhostView G; GridView g; Real* trial[3]; Real dt; bool withForce; Real gravity[3];
@@ -264,7 +264,7 @@ struct ContactSign
 };
 
 // Friction walls in contact: stick (the noSlip mirror this step, the node
-// marked) or slide (MpmSystem::decideFrictionStick), before the fold
+// marked) or slide (phases/walls.cpp: decideFrictionStick), before the fold
 struct FrictionStick
 {
     GhostView G; GridView g; Real* stuck[3]; Real dt; bool withForce; Real gravity[3];
@@ -477,7 +477,7 @@ private:
                 break;
             case Phase::nodalAfterScatter:
             {
-                // MpmSystem::nodalAfterScatter without halo (one rank)
+                // nodalAfterScatter (phases/nodalUpdate.hpp) without halo (one rank)
                 Gravity gr{g_, {c_.gravity[0], c_.gravity[1], c_.gravity[2]}};
                 Exec::forEach(g_.n, gr, "the gravity kernel");
                 if (withForce) sumPeriodic({g_.mass, g_.volume, g_.momentum[0], g_.momentum[1], g_.momentum[2]},
@@ -578,7 +578,7 @@ private:
         Exec::forEach(P_.n, body, "the velocity gradient kernel");
     }
 
-    // After an updated velocity, in MpmSystem's order: friction walls,
+    // After an updated velocity, in the host phases' order: friction walls,
     // level-set walls, the ghost fill
     void walls(Real* const v[3], Real dt, Real tol)
     {

@@ -49,7 +49,7 @@ public:
     // strength is not a friction alone (elastic solids, fluids, cohesive or
     // stress-free grains). A friction wall cannot hold the material harder
     // than this: the material next to it yields first
-    // (MpmSystem::frictionCap, docs/druckerPrager.md).
+    // (MpmSystem::computeFrictionCap, docs/druckerPrager.md).
     virtual Real shearStrengthRatio() const;
 
     // One line on how the parameters given were read (the friction match

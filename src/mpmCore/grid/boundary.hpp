@@ -48,8 +48,9 @@ struct WallCondition
     Real frictionCoefficient = 0;   // Coulomb mu, for WallType::friction
     std::array<Real, 3> velocity{0, 0, 0};   // for WallType::inlet
     // An outlet whose nodes are free but whose points are held as at a
-    // wall (MpmSystem::exitCondition): the lattice faces beyond a mesh that
-    // is not a box ("beyondMesh", src/mpmFoam/boundary/wallConditions.C).
+    // wall (exitCondition, phases/movePoints.hpp): the lattice faces
+    // beyond a mesh that is not a box ("beyondMesh",
+    // src/mpmFoam/boundary/wallConditions.C).
     // Only a point that went through a level-set wall, or through the
     // corner where it meets a mirrored box wall, reaches such a face; held
     // inside the box, the level-set containment then puts it back out of

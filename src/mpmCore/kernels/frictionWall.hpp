@@ -1,7 +1,7 @@
 // Kernel bodies of the Coulomb friction of the box's friction walls
-// (Bardenhagen et al. 2000), on one node: MpmSystem::applyFriction runs them
-// over the boundary's node lists on the host, the resident device step
-// (backend/residentStepImpl.hpp) one thread per node. J[a][I] is the normal
+// (Bardenhagen et al. 2000), on one node: applyFriction (phases/walls.hpp)
+// runs them over the boundary's node lists on the host, the resident device
+// step (backend/residentStepImpl.hpp) one thread per node. J[a][I] is the normal
 // impulse the wall normal to axis a delivers to node I in this step: from
 // the mirror fold of its contact ghosts (frictionGhostImpulse, summed into
 // the image), and on the first node layer from removing a normal velocity

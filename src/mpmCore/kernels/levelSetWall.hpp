@@ -18,7 +18,7 @@ namespace mpm {
 // impulse per unit mass in this step), never reversing it. Summed over the
 // nodes in contact, the normal impulse is the load the wall carries, so a
 // body sliding on a level-set wall feels mu times its normal load.
-// muCap: the largest friction coefficient applied (MpmSystem::frictionCap_:
+// muCap: the largest friction coefficient applied (SystemState::frictionCap:
 // a wall rougher than the material holds it as the material's own friction)
 //
 // A noSlip wall also stops the nodes within one cell outside it (phi <

@@ -5,7 +5,7 @@
 // advancePoint computes the new position, wrapped in periodic directions,
 // and says whether the point went non-finite or lies beyond a non-periodic
 // face. The few points beyond a face are classified by the host (an open
-// face lets them out, a wall holds them: MpmSystem::movePoints), because
+// face lets them out, a wall holds them: phases/movePoints.hpp), because
 // that needs the boundary's per-patch conditions. storePosition writes the
 // position back, just inside the walls.
 #pragma once

@@ -3,7 +3,7 @@
 // wall contact are bodies over the boundary's ghost list in the resident
 // device step (backend/residentStepImpl.hpp) and loops over it in
 // MpmSystem; halos, friction, open faces and the coupled and
-// consistent-mass solves are MpmSystem's (host) alone.
+// consistent-mass solves are the host phases' alone (phases/nodalUpdate.cpp).
 #pragma once
 #include "views.hpp"
 

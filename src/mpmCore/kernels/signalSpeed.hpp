@@ -2,7 +2,8 @@
 // its law's wave speed at its volume ratio J, for a parcel lighter than its
 // law's reference density (grains in a fluid: mass = rho0 solidFraction V0)
 // faster by sqrt(rho0 V0 / mass), plus its speed |v|. The host's
-// MpmSystem::maxSignalSpeed and the resident device step reduce it with max.
+// maxSignalSpeed (phases/timeStepLimit.hpp) and the resident device step
+// reduce it with max.
 #pragma once
 #include "../constitutive/lawKernels.hpp"
 #include "views.hpp"

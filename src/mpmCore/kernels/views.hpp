@@ -2,7 +2,7 @@
 //
 // A kernel body (kernels/*.hpp) is written once, as an MPM_HOST_DEVICE
 // function of one point or one node over these views, and launched by every
-// back-end (step/mpmSystem.cpp's loops: serial, OpenMP;
+// back-end (the host phases' loops, phases/*.cpp: serial, OpenMP;
 // backend/forEachOnDevice.cuh: CUDA; backend/residentStepImpl.hpp: the
 // resident step on CUDA and its host stand-in). The
 // views hold raw pointers only, so they are trivially copyable into a CUDA

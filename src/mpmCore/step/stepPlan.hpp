@@ -1,8 +1,9 @@
 // The phase order of one MPM step, as data: built once from the step's
 // options, logged at start-up, and run by every back-end's launcher
-// (MpmSystem's host phases, its host-assisted cuda phases, the resident
-// device step of backend/residentStep.hpp). No back-end writes the order
-// itself, so a change to it (a USF, USL or MUSL detail) is made once here.
+// (launchers/launchers.hpp: the host phases, the host-assisted cuda
+// phases, the resident device step of backend/residentStep.hpp). No
+// back-end writes the order itself, so a change to it (a USF, USL or MUSL
+// detail) is made once here.
 //
 //   USF   scatter  nodalAfterScatter  gradientFromOld  stress  scatterForce
 //         foldForce  nodalUpdate  gather  move  migrate
