@@ -194,8 +194,11 @@ checkConservation "box mesh on 3 ranks" "$bp/log.mpmFoam" "$count" "$idSum" "$ch
 # run with its points stored in reverse order ends 3.4e-8 from the serial
 # run (measured), and loosening the solvers' tolerance tenfold only 7.7e-14.
 # A partition changes the order as such a permutation does, so the balanced
-# run must agree with serial as closely as the reversed serial run does
-# (within 10 times its difference; measured 8.7e-8 against 3.4e-8). With
+# run must agree with serial as closely as the reversed serial run does,
+# within 30 times its difference: the partitions vary from run to run
+# (scotch), and so does the round-off they carry (measured 8.7e-8 to
+# 2.6e-7 against 3.4e-8); an error in the exchange, such as drag summed
+# twice at a halo node, is of order 1, 1e7 times larger. With
 # the owners that follow the mesh (parallelCoupled.sh) alpha.solid happens
 # to be bitwise serial's, and the runs agree to 1e-9.
 for mode in oneWay twoWay; do
@@ -223,7 +226,7 @@ for mode in oneWay twoWay; do
     read -r nb start <<< "$(rebalances "$up/log.mpmFoam")"
     read -r ids w <<< "$(cloudDiff "$us" "$up" 0.05 U)"
     read -r rids r <<< "$(cloudDiff "$us" "$ur" 0.05 U)"
-    bound=1e-10; [ "$mode" = twoWay ] && bound="10*r"
+    bound=1e-10; [ "$mode" = twoWay ] && bound="30*r"
     check "box mesh, coupled $mode, on 2 ranks balanced at the start (max/mean $start): the same points, within $bound of serial ($w; the serial run with its points in reverse order: $r)" \
         "i == 1 and ri == 1 and w <= $bound and start <= 1.05" i="${ids:-0}" ri="${rids:-0}" w="$w" r="$r" start="$start"
 done
