@@ -1,5 +1,6 @@
 #include "scotchRepartition.H"
 #include "error.H"
+#include "floatingPointTraps.H"
 
 #include <cstdint>
 #include <cstdio>
@@ -38,6 +39,10 @@ Foam::labelList Foam::scotchRepartition
     const label n = graph.size();
     labelList part(n, 0);
     if (n == 0 || nParts <= 1) return part;
+    // scotch's balance arithmetic divides by zero on small graphs (a few
+    // points left before an outlet): OpenFOAM's scotchDecomp switches the
+    // traps off around it too
+    const floatingPointTrapsOff noTraps;
 
     // Compressed rows, as scotch reads them (SCOTCH_Num is scotch's own
     // integer; OpenFOAM's label may differ)
