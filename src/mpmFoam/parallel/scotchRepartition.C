@@ -84,6 +84,16 @@ Foam::labelList Foam::scotchRepartition
     SCOTCH_stratExit(&strat);
     SCOTCH_graphExit(&g);
 
-    forAll(part, v) part[v] = label(parttab[v]);
+    forAll(part, v)
+    {
+        part[v] = label(parttab[v]);
+        if (part[v] < 0 || part[v] >= nParts)
+        {
+            FatalErrorInFunction
+                << "scotch gave vertex " << v << " of " << n << " the part "
+                << part[v] << ", not one of 0.." << nParts - 1
+                << exit(FatalError);
+        }
+    }
     return part;
 }
