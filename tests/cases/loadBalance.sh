@@ -177,7 +177,7 @@ f=$(fieldsDiff "$bs" "$bp" "$bEnd" alpha.solid U.solid)
 check "box mesh on 3 ranks, balanced: alpha.solid and U.solid (reconstructPar) within 1e-10 of serial ($f)" "f <= 1e-10" f="${f:-1}"
 # Each rebalance starts from the present owners and pays for what it moves
 # (scotchRepartition): the slab drifts, and the cells at the parts' edges
-# move. Measured: 2.5 to 2.7 % of the points per rebalance (scotch's
+# move. Measured: 1.7 to 2.7 % of the points per rebalance (scotch's
 # partitions vary from run to run); partitioned from scratch
 # (migrationRatio 0) 52 %.
 read -r share most <<< "$(movedShare "$bp/log.mpmFoam")"
