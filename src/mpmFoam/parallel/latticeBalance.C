@@ -2,7 +2,6 @@
 #include "choice.H"
 #include "scotchRepartition.H"
 #include "HashTable.H"
-#include <algorithm>
 
 namespace
 {
