@@ -2,6 +2,7 @@
 // translation is exact under PIC, APIC preserves affine velocity fields, and
 // results do not depend on the number of OpenMP threads.
 #include "testHelpers.hpp"
+#include "kernels/g2p.hpp"
 #include "kernels/p2g.hpp"
 #include "transfer/stencil.hpp"
 #include <gtest/gtest.h>
@@ -463,6 +464,88 @@ TEST(Transfer, RowScatterEqualsNodeByNode)
     run(QuadraticBSpline{});
     run(CubicBSpline{});
 }
+
+// The host's G2P from the packed node velocities (kernels/g2p.hpp:
+// g2pPackedPoints, one and two points at a time) must give the same bits
+// as g2pPoint's node loop over the six velocity arrays, which the device
+// runs: the same terms in the same order.
+#ifdef MPM_HOST_LANES
+TEST(Transfer, PackedGatherEqualsNodeByNode)
+{
+    auto run = [](auto k)
+    {
+        using K = decltype(k);
+        Lattice L;
+        L.h = 0.1;
+        L.nCells = {9, 8, 7};
+        L.finalise();
+        const Index np = 501;
+        std::vector<std::vector<Real>> store;
+        store.reserve(128);
+        auto array = [&](Index n) { store.emplace_back(n, 0.0); return store.back().data(); };
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<Real> u(0, 1);
+        GridView g;
+        g.n = L.nNodes;
+        for (int d = 0; d < 3; ++d)
+        {
+            g.velocity[d] = array(g.n);
+            g.velocityOld[d] = array(g.n);
+            for (Index I = 0; I < g.n; ++I)
+            {
+                g.velocity[d][I] = u(rng) - 0.5;
+                g.velocityOld[d][I] = u(rng) - 0.5;
+            }
+        }
+        std::vector<Real> pack(8*g.n, 0.0);
+        for (Index I = 0; I < g.n; ++I) packNodeVelocity(g, pack.data(), I);
+        // Three copies of the points: node loop, one and two at a time
+        PointView P[3];
+        for (int c = 0; c < 3; ++c)
+        {
+            P[c].n = np;
+            for (int d = 0; d < 3; ++d) { P[c].x[d] = array(np); P[c].v[d] = array(np); P[c].dx[d] = array(np); }
+            for (int e = 0; e < 9; ++e) P[c].L[e] = array(np);
+        }
+        for (Index p = 0; p < np; ++p)
+        for (int d = 0; d < 3; ++d)
+        {
+            const Real x = L.h*(2 + u(rng)*(L.nCells[d] - 4)), v = u(rng) - 0.5;
+            for (int c = 0; c < 3; ++c) { P[c].x[d][p] = x; P[c].v[d][p] = v; }
+        }
+        GridView packed = g;
+        packed.velocityPack = pack.data();
+        const Real flip = 0.97, dt = 1e-3;
+        for (Index p = 0; p < np; ++p)
+        {
+            g2pPoint<K, 3, false>(L, P[0], g, flip, dt, p);
+            g2pPackedPoints<K, 1>(L, P[1], packed, flip, dt, &p);
+        }
+        for (Index p = 0; p + 1 < np; p += 2)
+        {
+            const Index pair[2] = {p, p + 1};
+            g2pPackedPoints<K, 2>(L, P[2], packed, flip, dt, pair);
+        }
+        const Index last = np - 1;
+        g2pPackedPoints<K, 1>(L, P[2], packed, flip, dt, &last);
+        for (int c = 1; c < 3; ++c)
+        for (Index p = 0; p < np; ++p)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                ASSERT_EQ(P[c].v[d][p], P[0].v[d][p]) << "width " << K::width << ", copy " << c << ", point " << p;
+                ASSERT_EQ(P[c].dx[d][p], P[0].dx[d][p]);
+            }
+            for (int e = 0; e < 9; ++e) ASSERT_EQ(P[c].L[e][p], P[0].L[e][p]);
+        }
+        // The gather did something
+        EXPECT_NE(P[0].L[0][np/2], 0.0);
+        EXPECT_NE(P[0].dx[1][np/2], 0.0);
+    };
+    run(QuadraticBSpline{});
+    run(CubicBSpline{});
+}
+#endif
 
 namespace {
 

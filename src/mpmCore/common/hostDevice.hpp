@@ -18,3 +18,11 @@
 #define MPM_SIMD _Pragma("omp simd")
 #endif
 
+
+// Four Reals as one vector register on the CPU (GCC's and Clang's vector
+// extension: element-wise arithmetic, each lane rounded as the scalar
+// expression is, so the same bits). Host code only: a GPU thread is one
+// point, and kernels use it under MPM_HOST_LANES only.
+#if !defined(__CUDA_ARCH__) && (defined(__GNUC__) || defined(__clang__))
+#define MPM_HOST_LANES 1
+#endif

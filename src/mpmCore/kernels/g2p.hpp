@@ -12,6 +12,94 @@
 
 namespace mpm {
 
+// One node's record of GridView::velocityPack: v, then v - vOld as FLIP's
+// increment computes it (the fourth and eighth values stay zero)
+MPM_HOST_DEVICE inline void packNodeVelocity(const GridView& g, Real* pack, Index I)
+{
+    Real* r = pack + 8*I;
+    for (int i = 0; i < 3; ++i)
+    {
+        r[i] = g.velocity[i][I];
+        r[4 + i] = g.velocity[i][I] - g.velocityOld[i][I];
+    }
+}
+
+// PIC/FLIP's point update from the sums: the blended velocity, the
+// displacement dt vPic and the velocity gradient
+MPM_HOST_DEVICE inline void g2pWrite
+(
+    const PointView& P, Real flipRatio, Real dt, Index p, const Real vPic[3], const Real dv[3], const Real Lg[9]
+)
+{
+    for (int i = 0; i < 3; ++i)
+    {
+        P.v[i][p] = flipRatio*(P.v[i][p] + dv[i]) + (1.0 - flipRatio)*vPic[i];
+        P.dx[i][p] = dt*vPic[i];
+    }
+    for (int e = 0; e < 9; ++e) P.L[e][p] = Lg[e];
+}
+
+#ifdef MPM_HOST_LANES
+// Host only: the 3D PIC/FLIP G2P of Np points at once from the velocity
+// pack (GridView::velocityPack; the device has none and takes g2pPoint's
+// node loop). A node's velocities are two 4-wide loads, and each point's
+// sums are 4-wide lanes: vPic, dv and the columns of L (L[3i+j] is lane i
+// of column j). The Np points' sums are independent chains, interleaved
+// node by node, so that they overlap in the FMA pipeline. Each lane adds
+// the same terms, by the same expressions, in the same node order as
+// g2pPoint's loop, so the results are the same bits
+// (tests/unit/transferTest.cpp).
+template<class K, int Np>
+inline void g2pPackedPoints
+(
+    const Lattice& L, const PointView& P, const GridView& g, Real flipRatio, Real dt, const Index* p
+)
+{
+    typedef Real R4 __attribute__((vector_size(4*sizeof(Real))));
+    Stencil<K, 3> s[Np];
+    R4 a[Np], b[Np], c0[Np], c1[Np], c2[Np];
+    for (int q = 0; q < Np; ++q)
+    {
+        s[q].compute(L, P.x[0][p[q]], P.x[1][p[q]], P.x[2][p[q]]);
+        a[q] = b[q] = c0[q] = c1[q] = c2[q] = R4{0, 0, 0, 0};
+    }
+    const Index s1 = L.stride[1], s2 = L.stride[2];
+    for (int k = 0; k < K::width; ++k)
+    for (int j = 0; j < K::width; ++j)
+    {
+        Real wjk[Np], djk[Np], wdk[Np];
+        const Real* row[Np];
+        for (int q = 0; q < Np; ++q)
+        {
+            wjk[q] = s[q].w[1][j]*s[q].w[2][k];
+            djk[q] = s[q].dw[1][j]*s[q].w[2][k];
+            wdk[q] = s[q].w[1][j]*s[q].dw[2][k];
+            row[q] = g.velocityPack + 8*(s[q].base[0] + (s[q].base[1] + j)*s1 + (s[q].base[2] + k)*s2);
+        }
+        for (int i = 0; i < K::width; ++i)
+        for (int q = 0; q < Np; ++q)
+        {
+            const Real N = s[q].w[0][i]*wjk[q];
+            const Real d0 = s[q].dw[0][i]*wjk[q], d1 = s[q].w[0][i]*djk[q], d2 = s[q].w[0][i]*wdk[q];
+            R4 v = {0, 0, 0, 0}, dvel = v;
+            __builtin_memcpy(&v, row[q] + 8*i, sizeof(R4));
+            __builtin_memcpy(&dvel, row[q] + 8*i + 4, sizeof(R4));
+            a[q] += N*v;
+            b[q] += N*dvel;
+            c0[q] += v*d0;
+            c1[q] += v*d1;
+            c2[q] += v*d2;
+        }
+    }
+    for (int q = 0; q < Np; ++q)
+    {
+        const Real Lg[9] = {c0[q][0], c1[q][0], c2[q][0], c0[q][1], c1[q][1], c2[q][1], c0[q][2], c1[q][2], c2[q][2]};
+        const Real vPic[3] = {a[q][0], a[q][1], a[q][2]}, dv[3] = {b[q][0], b[q][1], b[q][2]};
+        g2pWrite(P, flipRatio, dt, p[q], vPic, dv, Lg);
+    }
+}
+#endif
+
 template<class K, int D, bool Apic>
 MPM_HOST_DEVICE inline void g2pPoint
 (
@@ -19,6 +107,12 @@ MPM_HOST_DEVICE inline void g2pPoint
 )
 {
     constexpr bool lh = std::is_same<K, LinearHat>::value;
+#ifdef MPM_HOST_LANES
+    if constexpr (D == 3 && !Apic && K::width > 2)
+    {
+        if (g.velocityPack) { g2pPackedPoints<K, 1>(L, P, g, flipRatio, dt, &p); return; }
+    }
+#endif
     Stencil<K, D> s;
     s.compute(L, P.x[0][p], P.x[1][p], P.x[2][p]);
     Real vPic[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
@@ -38,14 +132,18 @@ MPM_HOST_DEVICE inline void g2pPoint
             }
         }
     });
-    for (int i = 0; i < 3; ++i)
+    if constexpr (!Apic)
     {
-        P.v[i][p] = Apic ? vPic[i] : flipRatio*(P.v[i][p] + dv[i]) + (1.0 - flipRatio)*vPic[i];
-        P.dx[i][p] = dt*vPic[i];
+        g2pWrite(P, flipRatio, dt, p, vPic, dv, Lg);
     }
-    for (int e = 0; e < 9; ++e) P.L[e][p] = Lg[e];
-    if constexpr (Apic)
+    else
     {
+        for (int i = 0; i < 3; ++i)
+        {
+            P.v[i][p] = vPic[i];
+            P.dx[i][p] = dt*vPic[i];
+        }
+        for (int e = 0; e < 9; ++e) P.L[e][p] = Lg[e];
         // LH: the affine matrix is the velocity gradient (Jiang et al.);
         // B-splines: C = B D^-1 with D constant per axis.
         Real Dinv[3];

@@ -48,6 +48,12 @@ struct GridView
     Real* force[3] = {};
     Real* velocityOld[3] = {};
     Real* velocity[3] = {};
+    // Optional (null where not built): per node, 8 values
+    // (v0 v1 v2 0 | v0-vOld0 v1-vOld1 v2-vOld2 0), so that the 3D PIC/FLIP
+    // G2P reads one node's velocities as two 4-wide loads instead of six
+    // scalar streams (kernels/g2p.hpp; built by phases/gather.cpp on the
+    // region's nodes after the nodal update)
+    const Real* velocityPack = nullptr;
 };
 
 // Host views of the step's arrays (defined in kernels/views.cpp).

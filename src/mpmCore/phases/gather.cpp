@@ -5,14 +5,42 @@ namespace mpm {
 
 namespace {
 
+// GridView::velocityPack on the active region's nodes (the only nodes a
+// point's stencil reaches)
+const Real* packVelocities(SystemState& s)
+{
+    Real* pack = s.grid.pack(s.grid.velocityPack);
+    const GridView g = gridView(s.grid);
+    s.forEachActiveNode([&](Index I) { packNodeVelocity(g, pack, I); });
+    return pack;
+}
+
 template<class K, int D, bool Apic>
 void gatherAs(SystemState& s, Real dt)
 {
     const PointView P = s.points();
-    const GridView g = gridView(s.grid);
+    GridView g = gridView(s.grid);
     const Lattice& L = s.lattice;
     const Index n = P.n;
     const Real alpha = s.options.flipRatio;
+#ifdef MPM_HOST_LANES
+    if constexpr (D == 3 && !Apic && K::width > 2)
+    {
+        // Two points at a time (kernels/g2p.hpp: their sums overlap)
+        g.velocityPack = packVelocities(s);
+        constexpr int Np = 2;
+        const Index groups = n/Np;
+        #pragma omp parallel for schedule(static) if(s.worthThreads(n))
+        for (Index q = 0; q < groups; ++q)
+        {
+            Index p[Np];
+            for (int r = 0; r < Np; ++r) p[r] = Np*q + r;
+            g2pPackedPoints<K, Np>(L, P, g, alpha, dt, p);
+        }
+        for (Index p = Np*groups; p < n; ++p) g2pPoint<K, D, Apic>(L, P, g, alpha, dt, p);
+        return;
+    }
+#endif
     #pragma omp parallel for schedule(static) if(s.worthThreads(n))
     for (Index p = 0; p < n; ++p) g2pPoint<K, D, Apic>(L, P, g, alpha, dt, p);
 }
