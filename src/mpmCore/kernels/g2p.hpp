@@ -44,11 +44,13 @@ MPM_HOST_DEVICE inline void g2pWrite
 // pack (GridView::velocityPack; the device has none and takes g2pPoint's
 // node loop). A node's velocities are two 4-wide loads, and each point's
 // sums are 4-wide lanes: vPic, dv and the columns of L (L[3i+j] is lane i
-// of column j). The Np points' sums are independent chains, interleaved
-// node by node, so that they overlap in the FMA pipeline. Each lane adds
-// the same terms, by the same expressions, in the same node order as
-// g2pPoint's loop, so the results are the same bits
-// (tests/unit/transferTest.cpp).
+// of column j). The sums are factored by rows: along each row of W nodes
+// in x, the sums of w_x v, w_x (v - vOld) and w_x' v, then each row's
+// y-z weights once; 3 FMAs per node instead of 5 plus the node's weight
+// products. That is the node loop's sum in another order, so it agrees
+// with it to round-off, not to the bit (tests/unit/transferTest.cpp). The
+// Np points' sums are independent chains, interleaved, so that they
+// overlap in the FMA pipeline.
 template<class K, int Np>
 inline void g2pPackedPoints
 (
@@ -56,6 +58,7 @@ inline void g2pPackedPoints
 )
 {
     typedef Real R4 __attribute__((vector_size(4*sizeof(Real))));
+    constexpr int W = K::width;
     Stencil<K, 3> s[Np];
     R4 a[Np], b[Np], c0[Np], c1[Np], c2[Np];
     for (int q = 0; q < Np; ++q)
@@ -64,31 +67,34 @@ inline void g2pPackedPoints
         a[q] = b[q] = c0[q] = c1[q] = c2[q] = R4{0, 0, 0, 0};
     }
     const Index s1 = L.stride[1], s2 = L.stride[2];
-    for (int k = 0; k < K::width; ++k)
-    for (int j = 0; j < K::width; ++j)
+    for (int k = 0; k < W; ++k)
+    for (int j = 0; j < W; ++j)
     {
-        Real wjk[Np], djk[Np], wdk[Np];
-        const Real* row[Np];
+        R4 sv[Np], sd[Np], sg[Np];
         for (int q = 0; q < Np; ++q)
         {
-            wjk[q] = s[q].w[1][j]*s[q].w[2][k];
-            djk[q] = s[q].dw[1][j]*s[q].w[2][k];
-            wdk[q] = s[q].w[1][j]*s[q].dw[2][k];
-            row[q] = g.velocityPack + 8*(s[q].base[0] + (s[q].base[1] + j)*s1 + (s[q].base[2] + k)*s2);
+            const Real* row = g.velocityPack + 8*(s[q].base[0] + (s[q].base[1] + j)*s1 + (s[q].base[2] + k)*s2);
+            sv[q] = sd[q] = sg[q] = R4{0, 0, 0, 0};
+            for (int i = 0; i < W; ++i)
+            {
+                R4 v = {0, 0, 0, 0}, dvel = v;
+                __builtin_memcpy(&v, row + 8*i, sizeof(R4));
+                __builtin_memcpy(&dvel, row + 8*i + 4, sizeof(R4));
+                sv[q] += s[q].w[0][i]*v;
+                sd[q] += s[q].w[0][i]*dvel;
+                sg[q] += s[q].dw[0][i]*v;
+            }
         }
-        for (int i = 0; i < K::width; ++i)
         for (int q = 0; q < Np; ++q)
         {
-            const Real N = s[q].w[0][i]*wjk[q];
-            const Real d0 = s[q].dw[0][i]*wjk[q], d1 = s[q].w[0][i]*djk[q], d2 = s[q].w[0][i]*wdk[q];
-            R4 v = {0, 0, 0, 0}, dvel = v;
-            __builtin_memcpy(&v, row[q] + 8*i, sizeof(R4));
-            __builtin_memcpy(&dvel, row[q] + 8*i + 4, sizeof(R4));
-            a[q] += N*v;
-            b[q] += N*dvel;
-            c0[q] += v*d0;
-            c1[q] += v*d1;
-            c2[q] += v*d2;
+            const Real wjk = s[q].w[1][j]*s[q].w[2][k];
+            const Real djk = s[q].dw[1][j]*s[q].w[2][k];
+            const Real wdk = s[q].w[1][j]*s[q].dw[2][k];
+            a[q] += wjk*sv[q];
+            b[q] += wjk*sd[q];
+            c0[q] += wjk*sg[q];
+            c1[q] += djk*sv[q];
+            c2[q] += wdk*sv[q];
         }
     }
     for (int q = 0; q < Np; ++q)
@@ -108,7 +114,7 @@ MPM_HOST_DEVICE inline void g2pPoint
 {
     constexpr bool lh = std::is_same<K, LinearHat>::value;
 #ifdef MPM_HOST_LANES
-    if constexpr (D == 3 && !Apic && K::width > 2)
+    if constexpr (D == 3 && !Apic)
     {
         if (g.velocityPack) { g2pPackedPoints<K, 1>(L, P, g, flipRatio, dt, &p); return; }
     }

@@ -24,7 +24,7 @@ void gatherAs(SystemState& s, Real dt)
     const Index n = P.n;
     const Real alpha = s.options.flipRatio;
 #ifdef MPM_HOST_LANES
-    if constexpr (D == 3 && !Apic && K::width > 2)
+    if constexpr (D == 3 && !Apic)
     {
         // Two points at a time (kernels/g2p.hpp: their sums overlap)
         g.velocityPack = packVelocities(s);
