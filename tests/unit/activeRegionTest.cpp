@@ -99,9 +99,9 @@ Result run(const Variant& v, bool sparse)
     // The grid on the real nodes (what the fluid and the output read; a
     // ghost outside the region is never read, and the dense step fills it)
     const Lattice& La = s.lattice();
-    auto real = [&](const std::vector<Real>& a)
+    auto real = [&](const auto& a)
     {
-        std::vector<Real> out;
+        StaggeredArray<Real> out;
         for (int k = 0; k < La.nCells[2]; ++k)
         for (int j = 0; j < La.nCells[1]; ++j)
         for (int i = 0; i < La.nCells[0]; ++i) out.push_back(a[La.realNode(i, j, k)]);
@@ -114,7 +114,11 @@ Result run(const Variant& v, bool sparse)
     {
         r.grid.momentum[d] = real(g.momentum[d]);
         r.grid.velocity[d] = real(g.velocity[d]);
-        if (v.coupled) r.velocityIntegral[d] = real(s.coupling().velocityIntegral[d]);
+        if (v.coupled)
+        {
+            const StaggeredArray<Real> vi = real(s.coupling().velocityIntegral[d]);
+            r.velocityIntegral[d].assign(vi.begin(), vi.end());
+        }
     }
     return r;
 }

@@ -482,8 +482,8 @@ TEST(LevelSetWall, InletSetsItsVelocityBeyondThePlaneAndLetsPointsLeave)
     Particles P;
     P.add({0.45, 0.86, 0.05}, {0, 1, 0}, 1, 1, 0);
     P.add({0.45, 0.80, 0.05}, {0, 1, 0}, 1, 1, 0);
-    std::array<std::vector<Real>, 9> Lg;
-    std::array<std::vector<Real>, 3> dx;
+    std::array<StaggeredArray<Real>, 9> Lg;
+    std::array<StaggeredArray<Real>, 3> dx;
     for (auto& a : Lg) a.assign(2, 0.0);
     for (auto& a : dx) a.assign(2, 0.0);
     const PointView pv = pointView(P, Lg, dx);

@@ -98,7 +98,7 @@ TEST(Transfer, RigidTranslationExactUnderPIC)
         MpmSystem s = periodicSystem(shape, 3, Transfer::picFlip, 0.0);
         auto& P = s.particles();
         const Real u[3] = {0.3, -0.2, 0.1};
-        std::vector<Real> x0[3];
+        StaggeredArray<Real> x0[3];
         for (int d = 0; d < 3; ++d) { for (Index p = 0; p < P.size(); ++p) P.v[d][p] = u[d]; x0[d] = P.x[d]; }
         const Real dt = 1e-3;
         s.step(dt);
@@ -157,8 +157,8 @@ TEST(Transfer, ThreadCountIndependent)
     for (auto shape : allShapes)
     for (auto transfer : {Transfer::picFlip, Transfer::apic})
     {
-        std::array<std::vector<Real>, 3> xs[2], vs[2];
-        std::array<std::vector<Real>, 6> sig[2];
+        std::array<StaggeredArray<Real>, 3> xs[2], vs[2];
+        std::array<StaggeredArray<Real>, 6> sig[2];
         const Index threshold = MpmSystem::parallelThreshold;
         MpmSystem::parallelThreshold = 1000;   // every loop runs threaded
         for (int run = 0; run < 2; ++run)
@@ -197,8 +197,8 @@ TEST(Transfer, P2gRowLoopChangesNoBit)
     for (auto shape : allShapes)
     for (auto order : {StressUpdate::USL, StressUpdate::USF, StressUpdate::MUSL})
     {
-        std::array<std::vector<Real>, 3> xs[3], vs[3];
-        std::array<std::vector<Real>, 6> sig[3];
+        std::array<StaggeredArray<Real>, 3> xs[3], vs[3];
+        std::array<StaggeredArray<Real>, 6> sig[3];
         const P2gRowLoop modes[3] = {P2gRowLoop::always, P2gRowLoop::never, P2gRowLoop::automatic};
         for (int run = 0; run < 3; ++run)
         {
@@ -315,7 +315,7 @@ TEST(Boundary, GravityNextToWallsSameForUSFAndUSL)
     for (auto shape : allShapes)
     for (auto wall : {WallType::noSlip, WallType::slip, WallType::friction})
     {
-        std::vector<Real> vy[2];
+        StaggeredArray<Real> vy[2];
         for (auto update : {StressUpdate::USL, StressUpdate::USF})
         {
             MpmSystem s;

@@ -4,17 +4,18 @@
 #include <array>
 #include <cstdint>
 #include <vector>
+#include "../common/staggeredArray.hpp"
 
 namespace mpm {
 
 struct GridState
 {
-    std::vector<Real> mass;
-    std::vector<Real> volume;                     // sum N V_p: solid fraction
-    std::array<std::vector<Real>, 3> momentum;
-    std::array<std::vector<Real>, 3> force;
-    std::array<std::vector<Real>, 3> velocityOld; // v^n, from P2G
-    std::array<std::vector<Real>, 3> velocity;    // v^{n+1}
+    StaggeredArray<Real> mass;
+    StaggeredArray<Real> volume;                     // sum N V_p: solid fraction
+    std::array<StaggeredArray<Real>, 3> momentum;
+    std::array<StaggeredArray<Real>, 3> force;
+    std::array<StaggeredArray<Real>, 3> velocityOld; // v^n, from P2G
+    std::array<StaggeredArray<Real>, 3> velocity;    // v^{n+1}
     // G2P's packed copy of velocity and velocity - velocityOld, 8 values
     // per node, valid on the active region's nodes during the gather
     // (GridView::velocityPack)

@@ -6,7 +6,7 @@ namespace mpm {
 
 PointView pointView
 (
-    Particles& P, std::array<std::vector<Real>, 9>& L, std::array<std::vector<Real>, 3>& dx
+    Particles& P, std::array<StaggeredArray<Real>, 9>& L, std::array<StaggeredArray<Real>, 3>& dx
 )
 {
     PointView w;

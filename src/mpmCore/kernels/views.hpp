@@ -13,6 +13,7 @@
 #include "../types.hpp"
 #include <array>
 #include <vector>
+#include "../common/staggeredArray.hpp"
 
 namespace mpm {
 
@@ -59,7 +60,7 @@ struct GridView
 // Host views of the step's arrays (defined in kernels/views.cpp).
 PointView pointView
 (
-    Particles& P, std::array<std::vector<Real>, 9>& L, std::array<std::vector<Real>, 3>& dx
+    Particles& P, std::array<StaggeredArray<Real>, 9>& L, std::array<StaggeredArray<Real>, 3>& dx
 );
 GridView gridView(GridState& g);
 

@@ -5,8 +5,8 @@ namespace mpm {
 
 namespace {
 
-template<class T>
-void permuteArray(std::vector<T>& a, const std::vector<Index>& order, std::vector<T>& tmp)
+template<class V>
+void permuteArray(V& a, const std::vector<Index>& order, V& tmp)
 {
     tmp.resize(a.size());
     for (std::size_t i = 0; i < order.size(); ++i) tmp[i] = a[order[i]];
@@ -30,7 +30,7 @@ void forEachArray(P& p, Fn&& f)
 
 void Particles::resize(Index n)
 {
-    forEachArray(*this, [n](std::vector<Real>& a) { a.resize(n, 0.0); });
+    forEachArray(*this, [n](StaggeredArray<Real>& a) { a.resize(n, 0.0); });
     material.resize(n, 0);
     id.resize(n, 0);
 }
@@ -55,15 +55,15 @@ Index Particles::add
 
 void Particles::permute(const std::vector<Index>& order)
 {
-    std::vector<Real> tmp;
-    forEachArray(*this, [&](std::vector<Real>& a) { permuteArray(a, order, tmp); });
-    std::vector<int> ti; permuteArray(material, order, ti);
+    StaggeredArray<Real> tmp;
+    forEachArray(*this, [&](StaggeredArray<Real>& a) { permuteArray(a, order, tmp); });
+    StaggeredArray<int> ti; permuteArray(material, order, ti);
     std::vector<std::int64_t> tl; permuteArray(id, order, tl);
 }
 
 void Particles::pack(Index p, std::vector<char>& buf) const
 {
-    forEachArray(*this, [&](const std::vector<Real>& a) { appendBytes(buf, &a[p], 1); });
+    forEachArray(*this, [&](const StaggeredArray<Real>& a) { appendBytes(buf, &a[p], 1); });
     appendBytes(buf, &material[p], 1);
     appendBytes(buf, &id[p], 1);
 }
@@ -71,14 +71,14 @@ void Particles::pack(Index p, std::vector<char>& buf) const
 void Particles::unpack(const std::vector<char>& buf)
 {
     std::size_t nReal = 0;
-    forEachArray(*this, [&](const std::vector<Real>&) { ++nReal; });
+    forEachArray(*this, [&](const StaggeredArray<Real>&) { ++nReal; });
     const std::size_t bytes = nReal*sizeof(Real) + sizeof(int) + sizeof(std::int64_t);
     const Index n0 = size(), n = Index(buf.size()/bytes);
     resize(n0 + n);
     std::size_t at = 0;
     for (Index p = n0; p < n0 + n; ++p)
     {
-        forEachArray(*this, [&](std::vector<Real>& a) { readBytes(buf, at, &a[p], 1); });
+        forEachArray(*this, [&](StaggeredArray<Real>& a) { readBytes(buf, at, &a[p], 1); });
         readBytes(buf, at, &material[p], 1);
         readBytes(buf, at, &id[p], 1);
     }
@@ -91,7 +91,7 @@ void Particles::remove(const std::vector<Index>& ascending)
     {
         const Index p = *it, last = --n;
         if (p == last) continue;
-        forEachArray(*this, [&](std::vector<Real>& a) { a[p] = a[last]; });
+        forEachArray(*this, [&](StaggeredArray<Real>& a) { a[p] = a[last]; });
         material[p] = material[last];
         id[p] = id[last];
     }

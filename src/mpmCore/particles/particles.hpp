@@ -4,21 +4,22 @@
 #include "../types.hpp"
 #include <array>
 #include <vector>
+#include "../common/staggeredArray.hpp"
 
 namespace mpm {
 
 struct Particles
 {
-    std::array<std::vector<Real>, 3> x;      // position
-    std::array<std::vector<Real>, 3> v;      // velocity
-    std::vector<Real> mass;
-    std::vector<Real> volume0;               // initial volume
-    std::vector<Real> volume;                // current volume = J volume0
-    std::array<std::vector<Real>, 9> F;      // deformation gradient (row-major)
-    std::array<std::vector<Real>, 6> sigma;  // Cauchy stress (xx yy zz xy yz xz)
-    std::array<std::vector<Real>, 9> C;      // APIC affine velocity matrix
-    std::vector<Real> eqPlasticStrain;       // history of plastic laws
-    std::vector<int> material;               // index into the material list
+    std::array<StaggeredArray<Real>, 3> x;      // position
+    std::array<StaggeredArray<Real>, 3> v;      // velocity
+    StaggeredArray<Real> mass;
+    StaggeredArray<Real> volume0;               // initial volume
+    StaggeredArray<Real> volume;                // current volume = J volume0
+    std::array<StaggeredArray<Real>, 9> F;      // deformation gradient (row-major)
+    std::array<StaggeredArray<Real>, 6> sigma;  // Cauchy stress (xx yy zz xy yz xz)
+    std::array<StaggeredArray<Real>, 9> C;      // APIC affine velocity matrix
+    StaggeredArray<Real> eqPlasticStrain;       // history of plastic laws
+    StaggeredArray<int> material;               // index into the material list
     std::vector<std::int64_t> id;            // stable id, for diagnostics
 
     Index size() const { return Index(mass.size()); }

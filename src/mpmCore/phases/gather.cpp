@@ -46,7 +46,7 @@ void gatherAs(SystemState& s, Real dt)
 }
 
 template<class K, int D>
-void gradientAs(SystemState& s, const std::array<std::vector<Real>, 3>& v)
+void gradientAs(SystemState& s, const std::array<StaggeredArray<Real>, 3>& v)
 {
     const PointView P = s.points();
     const Real* const vp[3] = {v[0].data(), v[1].data(), v[2].data()};
@@ -70,7 +70,7 @@ void gather(SystemState& s, Real dt)
     });
 }
 
-void gradientFromGrid(SystemState& s, const std::array<std::vector<Real>, 3>& v)
+void gradientFromGrid(SystemState& s, const std::array<StaggeredArray<Real>, 3>& v)
 {
     s.dispatch([&](auto k, auto d) { gradientAs<decltype(k), decltype(d)::value>(s, v); });
 }

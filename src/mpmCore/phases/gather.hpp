@@ -11,6 +11,6 @@ namespace mpm {
 void gather(SystemState& s, Real dt);
 // The velocity gradient alone, from the grid velocity v (USF: v^n; MUSL:
 // the re-mapped velocity)
-void gradientFromGrid(SystemState& s, const std::array<std::vector<Real>, 3>& v);
+void gradientFromGrid(SystemState& s, const std::array<StaggeredArray<Real>, 3>& v);
 
 } // namespace mpm

@@ -66,7 +66,7 @@ void materialGrainVolume(SystemState& s, std::vector<std::vector<Real>>& out)
     for (auto& o : out)
     {
         sumHalo(s, {o.data()});
-        foldScalar(s, o);
+        foldScalar(s, o.data());
         if (s.subdomain) copyHalo(s, {o.data()}, Subdomain::HaloKind::exchange);
     }
 }

@@ -26,7 +26,7 @@ void addGravity(SystemState& s)
     s.forEachActiveNode([&](Index I) { gravityNode(g, gravity, I); });
 }
 
-void lumpedVelocity(SystemState& s, std::array<std::vector<Real>, 3>& v)
+void lumpedVelocity(SystemState& s, std::array<StaggeredArray<Real>, 3>& v)
 {
     const GridView g = gridView(s.grid);
     Real* const vp[3] = {v[0].data(), v[1].data(), v[2].data()};
@@ -42,7 +42,7 @@ void lumpedVelocity(SystemState& s, std::array<std::vector<Real>, 3>& v)
 // With diag (the coupling's dt K + M_a, >= 0) it solves (M + diag) x = rhs,
 // preconditioned by M_L + diag: a positive diagonal only speeds the sweeps.
 template<class K, int D>
-void solveMassAs(SystemState& s, const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x,
+void solveMassAs(SystemState& s, const std::array<StaggeredArray<Real>, 3>& rhs, std::array<StaggeredArray<Real>, 3>& x,
                const std::vector<Real>* diag)
 {
     const Index nNodes = s.lattice.nNodes;
@@ -103,7 +103,7 @@ void solveMassAs(SystemState& s, const std::array<std::vector<Real>, 3>& rhs, st
     }
 }
 
-void solveMass(SystemState& s, const std::array<std::vector<Real>, 3>& rhs, std::array<std::vector<Real>, 3>& x,
+void solveMass(SystemState& s, const std::array<StaggeredArray<Real>, 3>& rhs, std::array<StaggeredArray<Real>, 3>& x,
                const std::vector<Real>* diag = nullptr)
 {
     s.dispatch([&](auto k, auto d) { solveMassAs<decltype(k), decltype(d)::value>(s, rhs, x, diag); });
@@ -131,7 +131,7 @@ void extendCouplingBeyondOpenFaces(SystemState& s, bool addedMass)
 
 } // namespace
 
-void massToVelocity(SystemState& s, std::array<std::vector<Real>, 3>& v)
+void massToVelocity(SystemState& s, std::array<StaggeredArray<Real>, 3>& v)
 {
     if (s.options.massMatrix == MassMatrix::lumped) lumpedVelocity(s, v);
     else solveMass(s, s.grid.momentum, v);

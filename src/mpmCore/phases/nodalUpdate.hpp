@@ -14,7 +14,7 @@ namespace mpm {
 void updateMassTolerance(SystemState& s);
 
 // v = M^-1 p from the folded momentum (lumped or consistent mass)
-void massToVelocity(SystemState& s, std::array<std::vector<Real>, 3>& v);
+void massToVelocity(SystemState& s, std::array<StaggeredArray<Real>, 3>& v);
 
 // After the step's fresh P2G (host and host-assisted steps alike):
 // gravity, the halo sums, the ghost folds with the wall-contact decision,

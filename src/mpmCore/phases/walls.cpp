@@ -13,14 +13,14 @@ void foldGhosts(SystemState& s, unsigned what)
     auto& g = s.grid;
     if (mass)
     {
-        foldScalar(s, g.mass);
-        foldScalar(s, g.volume);
+        foldScalar(s, g.mass.data());
+        foldScalar(s, g.volume.data());
     }
     if (momentum) foldVector(s, g.momentum);
     if (force) foldVector(s, g.force);
 }
 
-void foldScalar(const SystemState& s, std::vector<Real>& a)
+void foldScalar(const SystemState& s, Real* a)
 {
     // Serial and in a fixed order: an image may receive from several ghosts.
     const auto& ghosts = s.boundary.ghosts();
@@ -29,7 +29,7 @@ void foldScalar(const SystemState& s, std::vector<Real>& a)
     for (const Index k : s.region.ghosts()) a[ghosts[k].ghost] = a[ghosts[k].image];
 }
 
-void foldVector(const SystemState& s, std::array<std::vector<Real>, 3>& a)
+void foldVector(const SystemState& s, std::array<StaggeredArray<Real>, 3>& a)
 {
     const auto& ghosts = s.boundary.ghosts();
     for (const Index k : s.region.ghosts())
@@ -39,7 +39,7 @@ void foldVector(const SystemState& s, std::array<std::vector<Real>, 3>& a)
     }
 }
 
-void fillGhosts(const SystemState& s, std::array<std::vector<Real>, 3>& v)
+void fillGhosts(const SystemState& s, std::array<StaggeredArray<Real>, 3>& v)
 {
     const auto& ghosts = s.boundary.ghosts();
     for (const Index k : s.region.ghosts())
@@ -127,7 +127,7 @@ void decideWallContact(SystemState& s, Real dt, bool withForce)
     decideFrictionStick(s, dt, withForce);
 }
 
-void applyFriction(SystemState& s, std::array<std::vector<Real>, 3>& v, Real dt)
+void applyFriction(SystemState& s, std::array<StaggeredArray<Real>, 3>& v, Real dt)
 {
     // Coulomb contact of friction walls (kernels/frictionWall.hpp), per
     // image node and wall. The wall pushes in two ways: by the mirror fold
@@ -234,7 +234,7 @@ void moveLevelSetWalls
     s.levelSetChanged = true;
 }
 
-void applyLevelSetWalls(SystemState& s, std::array<std::vector<Real>, 3>& v)
+void applyLevelSetWalls(SystemState& s, std::array<StaggeredArray<Real>, 3>& v)
 {
     const LevelSetView ls = s.levelSet.view();
     if (!ls) return;

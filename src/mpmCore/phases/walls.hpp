@@ -12,11 +12,11 @@ namespace mpm {
 // a fixed order (an image may receive from several ghosts); the vectors
 // with this step's reflection signs
 void foldGhosts(SystemState& s, unsigned what);
-void foldScalar(const SystemState& s, std::vector<Real>& a);
-void foldVector(const SystemState& s, std::array<std::vector<Real>, 3>& a);
+void foldScalar(const SystemState& s, Real* a);
+void foldVector(const SystemState& s, std::array<StaggeredArray<Real>, 3>& a);
 // The images' velocity reflected into their ghosts, the inlet velocity on
 // the free nodes beyond an inlet, the halo copied
-void fillGhosts(const SystemState& s, std::array<std::vector<Real>, 3>& v);
+void fillGhosts(const SystemState& s, std::array<StaggeredArray<Real>, 3>& v);
 
 // Contact of unilateral (slip, friction) walls, per image node, from the
 // folded mass: sets the ghosts' signs, the friction cap and the friction
@@ -25,7 +25,7 @@ void decideWallContact(SystemState& s, Real dt, bool withForce);
 // Coulomb friction of friction walls on the updated velocity, bounded by
 // the normal impulse of the wall's fold (momentum + dt force of its
 // contact ghosts) and contact at each node
-void applyFriction(SystemState& s, std::array<std::vector<Real>, 3>& v, Real dt);
+void applyFriction(SystemState& s, std::array<StaggeredArray<Real>, 3>& v, Real dt);
 
 // The largest friction coefficient a friction wall applies: the largest
 // shear strength ratio of the materials that have points, on any rank
@@ -44,6 +44,6 @@ void moveLevelSetWalls
     const std::vector<std::array<Real, 3>>& displacement,
     const std::vector<std::array<Real, 3>>& velocity
 );
-void applyLevelSetWalls(SystemState& s, std::array<std::vector<Real>, 3>& v);
+void applyLevelSetWalls(SystemState& s, std::array<StaggeredArray<Real>, 3>& v);
 
 } // namespace mpm

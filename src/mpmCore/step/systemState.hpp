@@ -91,7 +91,7 @@ struct SystemState
     // fully covered, and sampleGrid's copies
     std::vector<double> coverage;
     std::vector<unsigned char> coveredStencil;
-    std::array<std::vector<Real>, 5> sample;
+    std::array<StaggeredArray<Real>, 5> sample;
 
     // The cuda back-end's device mirror (null for the CPU ones) and the
     // resident step; shared_ptr: the deleter is bound where each is made,
@@ -108,8 +108,8 @@ struct SystemState
     // Scratch per point: velocity gradient and displacement over the step;
     // per point during the move: the open condition it leaves through, or
     // -1; the device move's flags (kernels/movePoint.hpp)
-    std::array<std::vector<Real>, 9> velocityGradient;
-    std::array<std::vector<Real>, 3> displacement;
+    std::array<StaggeredArray<Real>, 9> velocityGradient;
+    std::array<StaggeredArray<Real>, 3> displacement;
     std::vector<int> leavingThrough;
     std::vector<int> moveFlags;
 
@@ -119,14 +119,14 @@ struct SystemState
     // impulse (zero between applyFriction's calls) and where their image
     // sticks; the friction cap (computeFrictionCap)
     std::vector<std::array<Real, 3>> ghostSign;
-    std::array<std::vector<Real>, 3> wallImpulse;
-    std::array<std::vector<Real>, 3> wallStuck;
+    std::array<StaggeredArray<Real>, 3> wallImpulse;
+    std::array<StaggeredArray<Real>, 3> wallStuck;
     Real frictionCap = std::numeric_limits<Real>::infinity();
 
     // Scratch for the consistent-mass sweeps and the nodal solve: per
     // point and per node; the coupling's diagonal dt K + M_a
-    std::array<std::vector<Real>, 3> pointScratch;
-    std::array<std::vector<Real>, 3> nodeScratch, nodeRhs;
+    std::array<StaggeredArray<Real>, 3> pointScratch;
+    std::array<StaggeredArray<Real>, 3> nodeScratch, nodeRhs;
     std::vector<Real> nodeDiag;
 
     // The arrays' lattice (the domain, or the subdomain's box) with its

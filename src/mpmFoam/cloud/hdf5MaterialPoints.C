@@ -53,7 +53,7 @@ void forEachRealField(P& p, Fn&& f)
 }
 
 // Row-major rows of n points x cols components, and back
-std::vector<double> rows(const std::vector<mpm::Real>* a, int cols, const int* order, label n)
+std::vector<double> rows(const mpm::StaggeredArray<mpm::Real>* a, int cols, const int* order, label n)
 {
     std::vector<double> out(std::size_t(n)*cols);
     for (label p = 0; p < n; ++p)
@@ -66,7 +66,7 @@ std::vector<double> rows(const std::vector<mpm::Real>* a, int cols, const int* o
     return out;
 }
 
-void unrows(const std::vector<double>& in, std::vector<mpm::Real>* a, int cols, const int* order, label n)
+void unrows(const std::vector<double>& in, mpm::StaggeredArray<mpm::Real>* a, int cols, const int* order, label n)
 {
     for (label p = 0; p < n; ++p)
     {
@@ -199,7 +199,7 @@ void Foam::hdf5MaterialPoints::writeFile(const mpm::Particles& P, const word& na
             names.push_back(name);
             comps.push_back(cols);
         };
-        forEachRealField(P, [&](const char* name, const std::vector<mpm::Real>* a,
+        forEachRealField(P, [&](const char* name, const mpm::StaggeredArray<mpm::Real>* a,
             int cols, const int* order, const char* units, const char* what)
         {
             h5.writeRows(points + name, total, cols > 1 ? cols : 0, offset, rows(a, cols, order, n));
@@ -209,7 +209,7 @@ void Foam::hdf5MaterialPoints::writeFile(const mpm::Particles& P, const word& na
         for (label p = 0; p < n; ++p) J[p] = P.J(p);
         h5.writeRows(points + "J", total, 0, offset, J);
         described("J", 1, "1", "volume ratio det F (post-processing)");
-        h5.writeRows(points + "material", total, 0, offset, P.material);
+        h5.writeRows(points + "material", total, 0, offset, std::vector<int>(P.material.begin(), P.material.end()));
         described("material", 1, "1", "index into the file's materialNames");
         h5.writeRows(points + "pointId", total, 0, offset, P.id);
         described("pointId", 1, "1", "stable point id");
@@ -403,7 +403,7 @@ void Foam::hdf5MaterialPoints::readFile(const fileName& file, mpm::Particles& P)
         }
 
         P.resize(label(n));
-        forEachRealField(P, [&](const char* name, std::vector<mpm::Real>* a,
+        forEachRealField(P, [&](const char* name, mpm::StaggeredArray<mpm::Real>* a,
             int cols, const int* order, const char*, const char*)
         {
             std::vector<double> buf;

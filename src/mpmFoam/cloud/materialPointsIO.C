@@ -38,25 +38,25 @@ struct Writer
     const passiveParticleCloud& cloud;
     label n;
 
-    void scalarField(const char* name, const std::vector<mpm::Real>& a) const
+    void scalarField(const char* name, const mpm::StaggeredArray<mpm::Real>& a) const
     {
         IOField<scalar> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) f[i] = a[i];
         f.write(n > 0);
     }
-    void vectorField(const char* name, const std::array<std::vector<mpm::Real>, 3>& a) const
+    void vectorField(const char* name, const std::array<mpm::StaggeredArray<mpm::Real>, 3>& a) const
     {
         IOField<vector> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) f[i] = vector(a[0][i], a[1][i], a[2][i]);
         f.write(n > 0);
     }
-    void symmTensorField(const char* name, const std::array<std::vector<mpm::Real>, 6>& a) const
+    void symmTensorField(const char* name, const std::array<mpm::StaggeredArray<mpm::Real>, 6>& a) const
     {
         IOField<symmTensor> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) for (int c = 0; c < 6; ++c) f[i][c] = a[symmToCore[c]][i];
         f.write(n > 0);
     }
-    void tensorField(const char* name, const std::array<std::vector<mpm::Real>, 9>& a) const
+    void tensorField(const char* name, const std::array<mpm::StaggeredArray<mpm::Real>, 9>& a) const
     {
         IOField<tensor> f(cloud.fieldIOobject(name, IOobject::NO_READ), n);
         forAll(f, i) for (int c = 0; c < 9; ++c) f[i][c] = a[c][i];
@@ -92,22 +92,22 @@ struct Reader
         }
         return f;
     }
-    void scalarField(const char* name, std::vector<mpm::Real>& a) const
+    void scalarField(const char* name, mpm::StaggeredArray<mpm::Real>& a) const
     {
         const IOField<scalar> f(read<scalar>(name));
         forAll(f, i) a[i] = f[i];
     }
-    void vectorField(const char* name, std::array<std::vector<mpm::Real>, 3>& a) const
+    void vectorField(const char* name, std::array<mpm::StaggeredArray<mpm::Real>, 3>& a) const
     {
         const IOField<vector> f(read<vector>(name));
         forAll(f, i) for (int c = 0; c < 3; ++c) a[c][i] = f[i][c];
     }
-    void symmTensorField(const char* name, std::array<std::vector<mpm::Real>, 6>& a) const
+    void symmTensorField(const char* name, std::array<mpm::StaggeredArray<mpm::Real>, 6>& a) const
     {
         const IOField<symmTensor> f(read<symmTensor>(name));
         forAll(f, i) for (int c = 0; c < 6; ++c) a[symmToCore[c]][i] = f[i][c];
     }
-    void tensorField(const char* name, std::array<std::vector<mpm::Real>, 9>& a) const
+    void tensorField(const char* name, std::array<mpm::StaggeredArray<mpm::Real>, 9>& a) const
     {
         const IOField<tensor> f(read<tensor>(name));
         forAll(f, i) for (int c = 0; c < 9; ++c) a[c][i] = f[i][c];
