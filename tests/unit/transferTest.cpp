@@ -7,6 +7,7 @@
 #include "transfer/stencil.hpp"
 #include <gtest/gtest.h>
 #include <omp.h>
+#include <deque>
 #include <tuple>
 
 using namespace mpm;
@@ -390,6 +391,28 @@ TEST(Transfer, ReorderingPointsChangesOnlyRoundOff)
     }
 }
 
+namespace {
+
+// The 3D lattice of the kernel-level tests below
+Lattice smallLattice()
+{
+    Lattice L;
+    L.h = 0.1;
+    L.nCells = {9, 8, 7};
+    L.finalise();
+    return L;
+}
+
+// Zeroed arrays for raw views, alive as long as the store (a deque: adding
+// one moves none)
+struct ArrayStore
+{
+    std::deque<std::vector<Real>> arrays;
+    Real* operator()(Index n) { arrays.emplace_back(n, 0.0); return arrays.back().data(); }
+};
+
+} // namespace
+
 // The 3D P2G without APIC scatters row by row as one vector loop
 // (kernels/p2g.hpp); the APIC scatter goes node by node through
 // Stencil::forEach. With C = 0 the APIC momentum is v + 0 exactly, so both
@@ -400,14 +423,9 @@ TEST(Transfer, RowScatterEqualsNodeByNode)
     auto run = [](auto k)
     {
         using K = decltype(k);
-        Lattice L;
-        L.h = 0.1;
-        L.nCells = {9, 8, 7};
-        L.finalise();
+        const Lattice L = smallLattice();
         const Index np = 500;
-        std::vector<std::vector<Real>> store;
-        auto array = [&](Index n) { store.emplace_back(n, 0.0); return store.back().data(); };
-        store.reserve(64);
+        ArrayStore array;
         PointView P;
         P.n = np;
         for (int d = 0; d < 3; ++d) { P.x[d] = array(np); P.v[d] = array(np); }
@@ -476,14 +494,9 @@ TEST(Transfer, PackedGatherAgreesWithNodeByNode)
     auto run = [](auto k)
     {
         using K = decltype(k);
-        Lattice L;
-        L.h = 0.1;
-        L.nCells = {9, 8, 7};
-        L.finalise();
+        const Lattice L = smallLattice();
         const Index np = 501;
-        std::vector<std::vector<Real>> store;
-        store.reserve(128);
-        auto array = [&](Index n) { store.emplace_back(n, 0.0); return store.back().data(); };
+        ArrayStore array;
         std::mt19937 rng(11);
         std::uniform_real_distribution<Real> u(0, 1);
         GridView g;
