@@ -3,15 +3,15 @@
 // a different cache-line offset within a 4 KiB page.
 //
 // Why: glibc serves large blocks with mmap, page-aligned plus a 16-byte
-// header, so every array of one size starts at the same page offset. A
+// header, so every array of one size starts at the same page offset, and a
 // phase that streams 20-30 such arrays at the same index (the stress update
-// reads L, F, sigma, V0 and writes F, sigma, V) then maps all of them to
-// one set of the 12-way L1: measured on the solver's QBS block, the stress
-// phase took 64 ns per point at 102 400 points and more (arrays from mmap)
-// against 30 ns at 98 304 and fewer (arrays from the heap, staggered by
-// their headers), and 29 ns at 110 592 with glibc's mmap threshold raised
-// (benchmarks/README.md). Staggering the arrays removes the cliff
-// whichever way malloc serves them.
+// reads L, F, sigma, V0 and writes F, sigma, V) maps all of them to one set
+// of the 12-way L1. Measured on the solver's QBS block: the stress phase
+// took 64 ns per point at 102 400 points and more against 30 ns at 98 304
+// and fewer, and 29 ns at 110 592 with glibc's mmap threshold raised, so
+// that the arrays came from the heap (benchmarks/README.md; the set
+// conflict is inferred, there are no hardware counters here). With the
+// arrays staggered, 30 ns at every size, whichever way malloc serves them.
 #pragma once
 #include <atomic>
 #include <cstddef>
