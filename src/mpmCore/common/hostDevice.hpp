@@ -18,7 +18,6 @@
 #define MPM_SIMD _Pragma("omp simd")
 #endif
 
-
 // Four Reals as one vector register on the CPU (GCC's and Clang's vector
 // extension: element-wise arithmetic, each lane rounded as the scalar
 // expression is, so the same bits). Host code only: a GPU thread is one

@@ -2,7 +2,6 @@
 #pragma once
 #include "../types.hpp"
 #include <array>
-#include <cstdint>
 #include <vector>
 #include "../common/staggeredArray.hpp"
 
@@ -18,19 +17,9 @@ struct GridState
     std::array<StaggeredArray<Real>, 3> velocity;    // v^{n+1}
     // G2P's packed copy of velocity and velocity - velocityOld, 8 values
     // per node, valid on the active region's nodes during the gather
-    // (GridView::velocityPack)
-    std::vector<Real> velocityPack;
-
-    // A pack of 8 values per node (zero-filled when the lattice changes),
-    // its records aligned to 64 bytes so that no 4-wide load straddles a
-    // cache line
-    Real* pack(std::vector<Real>& p) const
-    {
-        const std::size_t n = 8*mass.size() + 8;
-        if (p.size() != n) p.assign(n, 0.0);
-        const std::size_t offset = (64 - reinterpret_cast<std::uintptr_t>(p.data()) % 64) % 64;
-        return p.data() + offset/sizeof(Real);
-    }
+    // (GridView::velocityPack; the allocator's 64-byte alignment keeps each
+    // record's two 4-wide loads within one cache line)
+    StaggeredArray<Real> velocityPack;
 
     void resize(Index n)
     {

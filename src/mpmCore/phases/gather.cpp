@@ -6,10 +6,13 @@ namespace mpm {
 namespace {
 
 // GridView::velocityPack on the active region's nodes (the only nodes a
-// point's stencil reaches)
+// point's stencil reaches); zero-filled when the lattice changes, so each
+// record's fourth and eighth values are zero
 const Real* packVelocities(SystemState& s)
 {
-    Real* pack = s.grid.pack(s.grid.velocityPack);
+    StaggeredArray<Real>& packed = s.grid.velocityPack;
+    if (packed.size() != 8*s.grid.mass.size()) packed.assign(8*s.grid.mass.size(), 0.0);
+    Real* pack = packed.data();
     const GridView g = gridView(s.grid);
     s.forEachActiveNode([&](Index I) { packNodeVelocity(g, pack, I); });
     return pack;
